@@ -1,0 +1,3 @@
+grammar CRT;
+script : EOF ;
+WS : [ \t\r\n]+ -> skip ;

@@ -1,0 +1,10 @@
+package dev.crt.cli;
+
+/** Placeholder entry point until the command line lands. */
+public final class Main {
+    private Main() {}
+
+    public static void main(String[] args) {
+        System.out.println("crt");
+    }
+}
