@@ -1,6 +1,5 @@
 package dev.crt.image;
 
-import dev.crt.scene.Picture;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.Map;
@@ -16,11 +15,6 @@ public final class ImageFiles {
      * {@code text} becomes PNG text chunks (Title, Author, …) and is ignored by the other formats.
      */
     public static void write(FrameBuffer image, Path out, double gamma, Map<String, String> text) throws IOException {
-        throw new UnsupportedOperationException("lands with issue 3");
-    }
-
-    /** Decodes an image file (PNG, JPEG, PPM…) into a Picture, with a plain-sentence IOException on failure. */
-    public static Picture readPicture(Path file) throws IOException {
         throw new UnsupportedOperationException("lands with issue 3");
     }
 }
