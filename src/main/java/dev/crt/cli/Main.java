@@ -1,10 +1,54 @@
 package dev.crt.cli;
 
-/** Placeholder entry point until the command line lands. */
-public final class Main {
-    private Main() {}
+import picocli.CommandLine;
+import picocli.CommandLine.Command;
+
+/** The {@code crt} command: compiles and renders CRT scene scripts. */
+@Command(name = "crt",
+        mixinStandardHelpOptions = true,
+        versionProvider = Main.Version.class,
+        description = "CRT, the Cathode Ray Tracer: compile and render .crt scene scripts.",
+        subcommands = {CheckCommand.class, RenderCommand.class, AnimateCommand.class,
+                CommandLine.HelpCommand.class},
+        footer = {"", "Exit codes: 0 success, 1 the script has errors, 2 bad usage, 3 a file could not be read or written."})
+public final class Main implements Runnable {
+    /** A bug in CRT rather than a problem with the user's input (EX_SOFTWARE). */
+    static final int INTERNAL_ERROR = 70;
+
+    @CommandLine.Spec
+    CommandLine.Model.CommandSpec spec;
+
+    @Override
+    public void run() {
+        throw new CommandLine.ParameterException(spec.commandLine(), "a command is needed: check, render or animate");
+    }
 
     public static void main(String[] args) {
-        System.out.println("crt");
+        System.exit(run(args));
+    }
+
+    /** Runs crt with {@code args} and returns its exit code (the tests call this). */
+    public static int run(String... args) {
+        CommandLine cl = new CommandLine(new Main());
+        cl.setExecutionExceptionHandler((ex, line, parsed) -> {
+            if (ex instanceof CliFailure f) {
+                line.getErr().println("crt: " + f.getMessage());
+                return f.exitCode();
+            }
+            line.getErr().println("crt: internal error (a bug in CRT, please report it): " + ex);
+            ex.printStackTrace(line.getErr());
+            return INTERNAL_ERROR;
+        });
+        return cl.execute(args);
+    }
+
+    /** The version from the jar's manifest, or "development" when run from classes. */
+    static final class Version implements CommandLine.IVersionProvider {
+        @Override
+        public String[] getVersion() {
+            String v = Main.class.getPackage().getImplementationVersion();
+            return new String[] {"crt " + (v == null ? "development build" : v),
+                    "Java " + System.getProperty("java.version") + " (" + System.getProperty("java.vm.name") + ")"};
+        }
     }
 }

@@ -1,0 +1,49 @@
+package dev.crt.cli;
+
+import dev.crt.image.FrameBuffer;
+import dev.crt.image.ImageFiles;
+import dev.crt.render.RenderMonitor;
+import dev.crt.render.RenderStats;
+import dev.crt.render.Renderer;
+import dev.crt.scene.Scene;
+import dev.crt.scene.Settings;
+import java.io.IOException;
+import java.nio.file.Path;
+import java.util.LinkedHashMap;
+import java.util.Map;
+
+/** Renders one compiled scene and writes it atomically to an image file: the unit render and animate share. */
+final class FrameJob {
+    /** What one frame cost: the renderer's counts and times plus the time to write the file. */
+    record Outcome(RenderStats stats, long writeNanos) {}
+
+    private FrameJob() {}
+
+    static Outcome run(Scene scene, Path out, int threads, RenderMonitor monitor) throws CliFailure {
+        Renderer renderer = Renderer.prepare(scene);
+        FrameBuffer image = renderer.render(threads, monitor);
+        long start = System.nanoTime();
+        try {
+            ImageFiles.write(image, out, scene.settings().gamma(), textChunks(scene.settings()));
+        } catch (IOException e) {
+            throw new CliFailure(ExitCode.FILE_ERROR, "cannot write " + out + ": " + ScriptCompilation.plain(e));
+        }
+        return new Outcome(renderer.stats(), System.nanoTime() - start);
+    }
+
+    /** PNG text chunks from the scene's metadata, with the standard keywords. */
+    static Map<String, String> textChunks(Settings s) {
+        Map<String, String> text = new LinkedHashMap<>();
+        putIfSet(text, "Title", s.title());
+        putIfSet(text, "Author", s.author());
+        putIfSet(text, "Creation Time", s.date());
+        putIfSet(text, "Description", s.notes());
+        String version = Main.class.getPackage().getImplementationVersion();
+        text.put("Software", "CRT " + (version == null ? "development build" : version));
+        return text;
+    }
+
+    private static void putIfSet(Map<String, String> text, String key, String value) {
+        if (value != null && !value.isEmpty()) text.put(key, value);
+    }
+}

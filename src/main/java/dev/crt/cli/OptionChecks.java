@@ -1,0 +1,24 @@
+package dev.crt.cli;
+
+import dev.crt.lang.CompileOptions;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.ParameterException;
+
+/** Turns option values into settings, reporting bad values as usage errors (exit code 2). */
+final class OptionChecks {
+    private OptionChecks() {}
+
+    static CompileOptions compileOptions(CommandSpec spec, ScriptOptions options) {
+        try {
+            return options.toCompileOptions();
+        } catch (IllegalArgumentException e) {
+            throw new ParameterException(spec.commandLine(), e.getMessage());
+        }
+    }
+
+    static void requireAtLeast(CommandSpec spec, Integer value, int min, String option) {
+        if (value != null && value < min) {
+            throw new ParameterException(spec.commandLine(), option + " must be at least " + min + ", got " + value);
+        }
+    }
+}

@@ -1,0 +1,87 @@
+package dev.crt.cli;
+
+import dev.crt.lang.CompileOptions;
+import dev.crt.lang.CompileResult;
+import dev.crt.lang.Source;
+import dev.crt.render.RenderCancelledException;
+import dev.crt.scene.Scene;
+import java.io.PrintWriter;
+import java.nio.file.Path;
+import java.util.Locale;
+import java.util.concurrent.Callable;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Parameters;
+import picocli.CommandLine.Spec;
+import picocli.CommandLine.Model.CommandSpec;
+
+/** {@code crt render}: compiles a script and renders it to an image file. */
+@Command(name = "render", mixinStandardHelpOptions = true, versionProvider = Main.Version.class,
+        description = {"Render a scene script to an image (.png, .ppm or .pfm by extension).",
+                "Command-line values override the script's Settings. Ctrl-C cancels and writes nothing."},
+        footer = {"", "Exit codes: 0 rendered, 1 the script has errors, 2 bad usage, 3 a file could not be read or written."})
+final class RenderCommand implements Callable<Integer> {
+    @Spec
+    CommandSpec spec;
+
+    @Parameters(index = "0", paramLabel = "SCENE", description = "The scene script (.crt).")
+    Path sceneFile;
+
+    @Option(names = {"-o", "--output"}, paramLabel = "OUT",
+            description = "The image to write (default: the script's name with .png, in the current folder).")
+    Path output;
+
+    @Mixin
+    ScriptOptions scriptOptions;
+
+    @Mixin
+    RenderOptions renderOptions;
+
+    @Override
+    public Integer call() throws CliFailure {
+        PrintWriter out = spec.commandLine().getOut();
+        PrintWriter err = spec.commandLine().getErr();
+        renderOptions.validate(spec);
+        CompileOptions options = OptionChecks.compileOptions(spec, scriptOptions);
+        Path target = output != null ? output : defaultOutput(sceneFile);
+        OutputFiles.checkWritableImage(target);
+
+        long compileStart = System.nanoTime();
+        Source source = ScriptCompilation.read(sceneFile);
+        CompileResult result = ScriptCompilation.compile(source, options, err);
+        long compileNanos = System.nanoTime() - compileStart;
+        if (result.hasErrors()) return ExitCode.SCRIPT_ERROR;
+        Scene scene = renderOptions.applyTo(result.scene());
+
+        long total = (long) scene.settings().width() * scene.settings().height();
+        FrameJob.Outcome outcome;
+        try (Cancellation cancel = Cancellation.install();
+             Progress progress = Progress.start("Rendering", total, "px", renderOptions.quiet)) {
+            outcome = FrameJob.run(scene, target, renderOptions.threads, cancel.monitor(progress));
+        } catch (RenderCancelledException e) {
+            err.println("crt: render cancelled; nothing was written");
+            err.flush();
+            return 130;
+        }
+        if (!renderOptions.quiet) {
+            err.printf(Locale.ROOT, "crt: wrote %s (%d×%d) in %s%n", target, scene.settings().width(),
+                    scene.settings().height(), seconds(compileNanos + outcome.stats().buildNanos()
+                            + outcome.stats().renderNanos() + outcome.writeNanos()));
+            err.flush();
+        }
+        if (renderOptions.stats) {
+            StatsReport.print(out, compileNanos, outcome);
+        }
+        out.flush();
+        return ExitCode.OK;
+    }
+
+    static Path defaultOutput(Path script) {
+        String name = script.getFileName().toString();
+        int dot = name.lastIndexOf('.');
+        return Path.of((dot > 0 ? name.substring(0, dot) : name) + ".png");
+    }
+
+    static String seconds(long nanos) { return String.format(Locale.ROOT, "%.3f s", nanos / 1e9); }
+}
