@@ -1,5 +1,6 @@
 package dev.crt.cli;
 
+import java.io.PrintWriter;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
 
@@ -27,9 +28,16 @@ public final class Main implements Runnable {
         System.exit(run(args));
     }
 
-    /** Runs crt with {@code args} and returns its exit code (the tests call this). */
+    /** Runs crt with {@code args} on the process's stdout and stderr; returns the exit code. */
     public static int run(String... args) {
+        return run(new PrintWriter(System.out, true), new PrintWriter(System.err, true), args);
+    }
+
+    /** Runs crt with {@code args}, printing results to {@code out} and diagnostics to {@code err}. */
+    public static int run(PrintWriter out, PrintWriter err, String... args) {
         CommandLine cl = new CommandLine(new Main());
+        cl.setOut(out);
+        cl.setErr(err);
         cl.setExecutionExceptionHandler((ex, line, parsed) -> {
             if (ex instanceof CliFailure f) {
                 line.getErr().println("crt: " + f.getMessage());
