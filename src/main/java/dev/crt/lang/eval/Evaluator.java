@@ -33,6 +33,7 @@ import java.util.Random;
 import java.util.Set;
 import org.antlr.v4.runtime.ParserRuleContext;
 import org.antlr.v4.runtime.Token;
+import org.antlr.v4.runtime.tree.ParseTree;
 import org.antlr.v4.runtime.tree.TerminalNode;
 
 /**
@@ -219,13 +220,27 @@ public final class Evaluator extends CRTBaseVisitor<Value> {
 
     // ---- expressions ---------------------------------------------------------------------------
 
+    /**
+     * Skips the chains of one-child contexts the precedence rules leave around every operand
+     * (expression, operation, arithmetic, atom): visiting them costs more than the work they wrap.
+     */
+    @Override
+    public Value visit(ParseTree tree) {
+        ParserRuleContext c = (ParserRuleContext) tree;
+        List<ParseTree> children;
+        while ((children = c.children) != null && children.size() == 1 && children.get(0) instanceof ParserRuleContext inner) {
+            c = inner;
+        }
+        return c.accept(this);
+    }
+
     @Override
     public Value visitAssignment(CRTParser.AssignmentContext ctx) {
         String name = ctx.IDENT().getText();
         if (name.equals("t")) {
             throw error("cannot assign to 't': it is the animation time, set from the command line", span(ctx.IDENT().getSymbol()));
         }
-        Value value = visit(ctx.expression());
+        Value value = visit(ctx.getChild(2));
         scope().put(name, value);
         return value;
     }
@@ -233,32 +248,34 @@ public final class Evaluator extends CRTBaseVisitor<Value> {
     private Map<String, Value> scope() { return locals != null ? locals : globals; }
 
     @Override
-    public Value visitPlainExpression(CRTParser.PlainExpressionContext ctx) { return visit(ctx.operation()); }
+    public Value visitPlainExpression(CRTParser.PlainExpressionContext ctx) { return visit(ctx.getChild(0)); }
 
     @Override
-    public Value visitArithmeticOperation(CRTParser.ArithmeticOperationContext ctx) { return visit(ctx.arithmetic()); }
+    public Value visitArithmeticOperation(CRTParser.ArithmeticOperationContext ctx) { return visit(ctx.getChild(0)); }
 
     @Override
-    public Value visitAtom(CRTParser.AtomContext ctx) { return visit(ctx.primary()); }
+    public Value visitAtom(CRTParser.AtomContext ctx) { return visit(ctx.getChild(0)); }
 
     @Override
-    public Value visitParenthesized(CRTParser.ParenthesizedContext ctx) { return visit(ctx.expression()); }
+    public Value visitParenthesized(CRTParser.ParenthesizedContext ctx) { return visit(ctx.getChild(1)); }
 
     @Override
     public Value visitComparison(CRTParser.ComparisonContext ctx) {
-        Value a = visit(ctx.operation(0));
-        Value b = visit(ctx.operation(1));
+        // Children by position: the generated accessors search and allocate on every call.
+        Value a = visit(ctx.getChild(0));
+        Value b = visit(ctx.getChild(2));
         String op = ctx.op.getText();
-        if (op.equals("==") || op.equals("!=")) {
+        int type = ctx.op.getType();
+        if (type == CRTParser.EQ || type == CRTParser.NE) {
             if (!a.typeName().equals(b.typeName())) throw badOperands(op, a, b, ctx);
             boolean equal = a instanceof NumberValue x && b instanceof NumberValue y ? x.value() == y.value() : a.equals(b);
-            return BooleanValue.of(equal == op.equals("=="));
+            return BooleanValue.of(equal == (type == CRTParser.EQ));
         }
         if (!(a instanceof NumberValue x) || !(b instanceof NumberValue y)) throw badOperands(op, a, b, ctx);
-        return BooleanValue.of(switch (op) {
-            case "<" -> x.value() < y.value();
-            case "<=" -> x.value() <= y.value();
-            case ">" -> x.value() > y.value();
+        return BooleanValue.of(switch (ctx.op.getType()) {
+            case CRTParser.LT -> x.value() < y.value();
+            case CRTParser.LE -> x.value() <= y.value();
+            case CRTParser.GT -> x.value() > y.value();
             default -> x.value() >= y.value();
         });
     }
@@ -281,19 +298,19 @@ public final class Evaluator extends CRTBaseVisitor<Value> {
 
     @Override
     public Value visitConditional(CRTParser.ConditionalContext ctx) {
-        return condition(ctx.operation(0), "?") ? visit(ctx.operation(1)) : visit(ctx.operation(2));
+        return condition((ParserRuleContext) ctx.getChild(0), "?") ? visit(ctx.getChild(2)) : visit(ctx.getChild(4));
     }
 
     @Override
     public Value visitNot(CRTParser.NotContext ctx) {
-        Value v = visit(ctx.arithmetic());
+        Value v = visit(ctx.getChild(1));
         if (v instanceof BooleanValue b) return BooleanValue.of(!b.value());
         throw error("operator '!' cannot apply to " + describe(v), span(ctx));
     }
 
     @Override
     public Value visitSign(CRTParser.SignContext ctx) {
-        Value v = visit(ctx.arithmetic());
+        Value v = visit(ctx.getChild(1));
         boolean minus = ctx.op.getType() == CRTParser.MINUS;
         if (v instanceof NumberValue n) return minus ? new NumberValue(-n.value(), n.integral()) : n;
         if (v instanceof VectorValue vec) return minus ? new VectorValue(vec.vector().negate()) : vec;
@@ -303,20 +320,20 @@ public final class Evaluator extends CRTBaseVisitor<Value> {
 
     @Override
     public Value visitMultiplicative(CRTParser.MultiplicativeContext ctx) {
-        Value a = visit(ctx.arithmetic(0));
-        Value b = visit(ctx.arithmetic(1));
+        Value a = visit(ctx.getChild(0));
+        Value b = visit(ctx.getChild(2));
         return Arithmetic.multiplicative(ctx.op.getText(), a, b, () -> span(ctx), this);
     }
 
     @Override
     public Value visitAdditive(CRTParser.AdditiveContext ctx) {
-        Value a = visit(ctx.arithmetic(0));
-        Value b = visit(ctx.arithmetic(1));
+        Value a = visit(ctx.getChild(0));
+        Value b = visit(ctx.getChild(2));
         String op = ctx.op.getText();
         if (a instanceof EntityValue x && b instanceof EntityValue y) {
-            CsgOperation operation = switch (op) {
-                case "+" -> CsgOperation.UNION;
-                case "-" -> CsgOperation.DIFFERENCE;
+            CsgOperation operation = switch (op.charAt(0)) {
+                case '+' -> CsgOperation.UNION;
+                case '-' -> CsgOperation.DIFFERENCE;
                 default -> CsgOperation.INTERSECTION;
             };
             return EntityValue.of(new Csg(operation, x.entity(), y.entity(), Transform.IDENTITY, span(ctx)));
@@ -347,28 +364,33 @@ public final class Evaluator extends CRTBaseVisitor<Value> {
 
     @Override
     public Value visitCall(CRTParser.CallContext ctx) {
-        List<CRTParser.ExpressionContext> argExprs = ctx.expression();
-        if (ctx.arithmetic() instanceof CRTParser.AtomContext atom
-                && atom.primary() instanceof CRTParser.VariableContext variable) {
+        if (ctx.getChild(0) instanceof CRTParser.AtomContext atom
+                && atom.getChild(0) instanceof CRTParser.VariableContext variable) {
             String name = name(variable);
             Value bound = lookupOrNull(name);
-            if (bound == null && !isAssigned(name) && Builtins.exists(name)) {
-                return callBuiltin(name, argExprs, ctx);
-            }
-            Value callee = visit(variable);
-            return callMacro(name, callee, argExprs, ctx);
+            if (bound == null && !isAssigned(name) && Builtins.exists(name)) return callBuiltin(name, ctx);
+            return callMacro(name, visit(variable), ctx);
         }
-        return callMacro(null, visit(ctx.arithmetic()), argExprs, ctx);
+        return callMacro(null, visit(ctx.getChild(0)), ctx);
     }
 
-    private Value callBuiltin(String name, List<CRTParser.ExpressionContext> argExprs, CRTParser.CallContext ctx) {
+    // Arguments are taken by position, children 2, 4, …: the generated accessor allocates a list.
+    private static int argumentCount(CRTParser.CallContext ctx) {
+        int n = ctx.getChildCount();
+        return n == 3 ? 0 : (n - 2) / 2;
+    }
+
+    private Value argument(CRTParser.CallContext ctx, int i) { return visit(ctx.getChild(2 + 2 * i)); }
+
+    private Value callBuiltin(String name, CRTParser.CallContext ctx) {
         int arity = Builtins.arity(name);
-        if (argExprs.size() != arity) {
+        int count = argumentCount(ctx);
+        if (count != arity) {
             throw error(name + " takes " + arity + (arity == 1 ? " argument" : " arguments") + ", "
-                    + Builtins.signature(name) + ", got " + argExprs.size(), span(ctx));
+                    + Builtins.signature(name) + ", got " + count, span(ctx));
         }
         Value[] args = new Value[arity];
-        for (int i = 0; i < arity; i++) args[i] = visit(argExprs.get(i));
+        for (int i = 0; i < arity; i++) args[i] = argument(ctx, i);
         return Builtins.call(name, new BuiltinCall(name, args, ctx));
     }
 
@@ -416,18 +438,19 @@ public final class Evaluator extends CRTBaseVisitor<Value> {
         public Random random() { return random; }
     }
 
-    private Value callMacro(String name, Value callee, List<CRTParser.ExpressionContext> argExprs, CRTParser.CallContext ctx) {
+    private Value callMacro(String name, Value callee, CRTParser.CallContext ctx) {
         if (!(callee instanceof MacroValue macro)) {
             throw error("cannot call " + describe(callee) + (name != null ? " '" + name + "'" : "") + ": only macros and functions take arguments", span(ctx));
         }
         String label = name != null ? "macro '" + name + "'" : "the macro";
         List<String> params = macro.parameters();
-        if (argExprs.size() != params.size()) {
+        int count = argumentCount(ctx);
+        if (count != params.size()) {
             throw error(label + " takes " + params.size() + (params.size() == 1 ? " argument" : " arguments")
-                    + " (" + String.join(", ", params) + "), got " + argExprs.size(), span(ctx));
+                    + " (" + String.join(", ", params) + "), got " + count, span(ctx));
         }
         Map<String, Value> scope = new HashMap<>();
-        for (int i = 0; i < params.size(); i++) scope.put(params.get(i), visit(argExprs.get(i)));
+        for (int i = 0; i < params.size(); i++) scope.put(params.get(i), argument(ctx, i));
         SourceSpan callSpan = span(ctx);
         if (callStack.size() >= MAX_MACRO_DEPTH) {
             throw error("macro calls nested deeper than " + MAX_MACRO_DEPTH + " (endless recursion?)", callSpan);
@@ -449,9 +472,10 @@ public final class Evaluator extends CRTBaseVisitor<Value> {
 
     @Override
     public Value visitModified(CRTParser.ModifiedContext ctx) {
-        Value target = visit(ctx.arithmetic());
-        for (CRTParser.ModifierContext m : ctx.modifier()) {
-            Value amount = visit(m.arithmetic());
+        Value target = visit(ctx.getChild(0));
+        for (int i = 2; i < ctx.getChildCount(); i += 2) {
+            CRTParser.ModifierContext m = (CRTParser.ModifierContext) ctx.getChild(i);
+            Value amount = visit(m.getChild(1));
             EntityValue.ModifierKind kind = switch (m.kind.getType()) {
                 case CRTParser.TRANSLATE -> EntityValue.ModifierKind.TRANSLATE;
                 case CRTParser.ROTATE -> EntityValue.ModifierKind.ROTATE;

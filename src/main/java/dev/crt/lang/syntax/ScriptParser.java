@@ -63,11 +63,13 @@ public final class ScriptParser {
     }
 
     private static void reportLexicalMistakes(CommonTokenStream tokens, SyntaxErrors errors) {
-        // Names are fixed on their tokens once, shared, so that evaluating them in loops neither
+        // Names and operators are fixed on their tokens once, shared, so that evaluating them in loops neither
         // copies characters again nor rehashes new strings.
         Map<String, String> names = new HashMap<>();
         for (Token token : tokens.getTokens()) {
-            if (token.getType() == CRTLexer.IDENT || token.getType() == CRTLexer.NAME) {
+            int type = token.getType();
+            if (type != Token.EOF && type != CRTLexer.INT && type != CRTLexer.FLOAT && type != CRTLexer.STRING
+                    && token.getChannel() == Token.DEFAULT_CHANNEL) {
                 ((CommonToken) token).setText(names.computeIfAbsent(token.getText(), n -> n));
             }
             if (token.getType() == CRTLexer.UNTERMINATED_STRING) {
