@@ -25,7 +25,7 @@ public final class ScriptFiles {
     public static Source read(Path file) throws IOException {
         byte[] bytes = Files.readAllBytes(file);
         int skip = startsWithBom(bytes) ? BOM.length : 0;
-        String name = file.getFileName() == null ? file.toString() : file.getFileName().toString();
+        String name = file.toString();
         ByteBuffer in = ByteBuffer.wrap(bytes, skip, bytes.length - skip);
         CharsetDecoder decoder = StandardCharsets.UTF_8.newDecoder()
                 .onMalformedInput(CodingErrorAction.REPORT)
