@@ -5,12 +5,16 @@ import java.awt.image.DataBufferByte;
 import java.awt.image.IndexColorModel;
 import java.awt.image.Raster;
 import java.awt.image.WritableRaster;
+import java.io.BufferedOutputStream;
 import java.io.IOException;
+import java.io.OutputStream;
 import java.nio.file.AtomicMoveNotSupportedException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
+import java.nio.file.StandardOpenOption;
 import java.util.Iterator;
+import java.util.concurrent.ThreadLocalRandom;
 import javax.imageio.IIOImage;
 import javax.imageio.ImageIO;
 import javax.imageio.ImageTypeSpecifier;
@@ -19,6 +23,7 @@ import javax.imageio.ImageWriter;
 import javax.imageio.metadata.IIOMetadata;
 import javax.imageio.metadata.IIOMetadataNode;
 import javax.imageio.stream.ImageOutputStream;
+import javax.imageio.stream.MemoryCacheImageOutputStream;
 
 /**
  * Writes an animated GIF that loops forever. All frames share one palette chosen by median cut over
@@ -49,7 +54,9 @@ public final class GifWriter {
         if (!(fps > 0)) throw new IllegalArgumentException("frames per second must be positive, got " + fps);
         Palette palette = choosePalette(frames);
         Path dir = out.toAbsolutePath().getParent();
-        Path temp = Files.createTempFile(dir, "." + out.getFileName() + ".", ".tmp");
+        // Named like ImageFiles' temporary files, so one rule finds what a killed run left behind.
+        Path temp = dir.resolve("." + out.getFileName() + ".tmp-"
+                + Long.toHexString(ThreadLocalRandom.current().nextLong() & Long.MAX_VALUE));
         try {
             encode(temp, frames, palette, fps);
             try {
@@ -73,15 +80,16 @@ public final class GifWriter {
         return quantizer.palette(COLOURS);
     }
 
-    private static void encode(Path file, Frames frames, Palette palette, double fps) throws IOException {
+    private static void encode(Path temp, Frames frames, Palette palette, double fps) throws IOException {
         Iterator<ImageWriter> writers = ImageIO.getImageWritersByFormatName("gif");
         if (!writers.hasNext()) throw new IOException("this Java runtime has no GIF writer");
         ImageWriter writer = writers.next();
         IndexColorModel opaque = colourModel(palette, -1);
         // The writer sets the transparency flag from the colour model, not from the metadata alone.
         IndexColorModel withUnchanged = colourModel(palette, UNCHANGED);
-        try (ImageOutputStream stream = ImageIO.createImageOutputStream(file.toFile())) {
-            if (stream == null) throw new IOException("cannot open " + file);
+        try (OutputStream file = new BufferedOutputStream(
+                     Files.newOutputStream(temp, StandardOpenOption.CREATE_NEW, StandardOpenOption.WRITE), 1 << 16);
+             ImageOutputStream stream = new MemoryCacheImageOutputStream(file)) {
             writer.setOutput(stream);
             RgbImage first = frames.read(0);
             writer.prepareWriteSequence(streamMetadata(writer, palette, first.width(), first.height()));
