@@ -20,14 +20,16 @@ import picocli.CommandLine.Spec;
 
 /** {@code crt animate}: renders a range of frames of a script that uses t, each frame an independent, restartable unit. */
 @Command(name = "animate", mixinStandardHelpOptions = true, versionProvider = Main.Version.class,
-        description = {"Render the frames of an animation: t is the frame number, and the script is compiled afresh for each frame.",
-                "Every frame is written atomically, so a killed run can be finished with --resume, and --shard I/N",
-                "splits the frames among N runs on any machines (see docs/animation.md)."},
+        description = {"Render the frames of an animation. t is the frame number and the script is compiled afresh for "
+                + "each frame. Every frame is written atomically, so a killed run can be finished with --resume, and "
+                + "--shard I/N splits the frames among N runs on any machines (see docs/animation.md)."},
         footer = {"", "Examples:",
-                "  crt animate orbit.crt --frames 0..47 -o frames/orbit_%04d.png --gif orbit.gif --fps 24",
-                "  crt animate orbit.crt --frames 0..999 -o /shared/f_%04d.png --shard 3/10 --resume",
-                "", "Exit codes: 0 all frames rendered, 1 the script has errors (at some frame), 2 bad usage,",
-                "3 a file could not be read or written, or outputs exist already without --resume or --force; 130 cancelled."})
+                "  crt animate orbit.crt --frames 0..47 -o frames/orbit_%%04d.png --gif orbit.gif",
+                "  crt animate orbit.crt --frames 0..999 -o /farm/f_%%04d.png --shard 3/10 --resume",
+                "",
+                "Exit codes: 0 every frame rendered, 1 the script has errors at some frame, 2 bad usage, 3 a file "
+                        + "could not be read or written (or frame files exist already without --resume or --force), "
+                        + "130 cancelled with Ctrl-C."})
 final class AnimateCommand implements Callable<Integer> {
     /** The exit code of a run stopped by Ctrl-C, as shells report a SIGINT. */
     static final int CANCELLED = 130;
