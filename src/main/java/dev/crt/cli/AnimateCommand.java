@@ -25,7 +25,7 @@ import picocli.CommandLine.Spec;
                 + "--shard I/N splits the frames among N runs on any machines (see docs/animation.md)."},
         footer = {"", "Examples:",
                 "  crt animate orbit.crt --frames 0..47 -o frames/orbit_%%04d.png --gif orbit.gif",
-                "  crt animate orbit.crt --frames 0..999 -o /farm/f_%%04d.png --shard 3/10 --resume",
+                "  crt animate orbit.crt --frames 0..999 -o /farm/%%04d.png --shard 3/10 --resume",
                 "",
                 "Exit codes: 0 every frame rendered, 1 the script has errors at some frame, 2 bad usage, 3 a file "
                         + "could not be read or written (or frame files exist already without --resume or --force), "
