@@ -1,0 +1,41 @@
+package dev.crt.cli;
+
+import dev.crt.image.GifWriter;
+import dev.crt.image.PictureFiles;
+import dev.crt.image.RgbImage;
+import dev.crt.scene.Picture;
+import java.io.IOException;
+import java.nio.file.Path;
+import java.util.List;
+
+/** Puts the frame files of an animation into one looping GIF. */
+final class GifAssembly {
+    private GifAssembly() {}
+
+    /** Writes {@code frames} (8-bit .png or .ppm files, in order) to {@code gif}; fails with exit code 3. */
+    static void write(Path gif, List<Path> frames, double fps) throws CliFailure {
+        GifWriter.Frames source = new GifWriter.Frames() {
+            @Override
+            public int count() { return frames.size(); }
+
+            @Override
+            public RgbImage read(int index) throws IOException { return rgb(PictureFiles.read(frames.get(index))); }
+        };
+        try {
+            GifWriter.write(gif, source, fps);
+        } catch (IOException e) {
+            throw new CliFailure(ExitCode.FILE_ERROR, "cannot write " + gif + ": " + ScriptCompilation.plain(e));
+        }
+    }
+
+    private static RgbImage rgb(Picture picture) {
+        float[] v = picture.rgb();
+        int[] packed = new int[picture.width() * picture.height()];
+        for (int i = 0; i < packed.length; i++) {
+            packed[i] = (byte8(v[3 * i]) << 16) | (byte8(v[3 * i + 1]) << 8) | byte8(v[3 * i + 2]);
+        }
+        return new RgbImage(picture.width(), picture.height(), packed);
+    }
+
+    private static int byte8(float stored) { return Math.max(0, Math.min(255, Math.round(stored * 255))); }
+}

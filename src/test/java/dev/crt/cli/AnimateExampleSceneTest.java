@@ -1,0 +1,26 @@
+package dev.crt.cli;
+
+import static dev.crt.cli.AnimateTestSupport.crt;
+import static org.assertj.core.api.Assertions.assertThat;
+
+import dev.crt.cli.AnimateTestSupport.Run;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/** The animated example in scenes/ animates, and its loop closes: frame 48 is frame 0 again. */
+class AnimateExampleSceneTest {
+    @TempDir
+    Path dir;
+
+    @Test
+    void orbitMovesAndLoopsAfterFortyEightFrames() throws Exception {
+        Run run = crt("animate", "scenes/orbit.crt", "--frames", "0..48:24", "-o", dir.resolve("o_%02d.png").toString(),
+                "--width", "40", "--height", "30", "-q");
+        assertThat(run.exit()).as(run.err()).isZero();
+        byte[] first = Files.readAllBytes(dir.resolve("o_00.png"));
+        assertThat(Files.readAllBytes(dir.resolve("o_24.png"))).isNotEqualTo(first);
+        assertThat(Files.readAllBytes(dir.resolve("o_48.png"))).isEqualTo(first);
+    }
+}
