@@ -85,6 +85,7 @@ public final class Evaluator extends CRTBaseVisitor<Value> {
             }
         } catch (EvaluationStopped stop) {
             record(Severity.ERROR, stop.getMessage(), stop.span(), stop.callChain());
+            errors++;
         }
         if (errors > 0) return null;
         if (!sawScene) warn("no Scene block: the picture shows only the background", positions.span(0, 0));
