@@ -40,7 +40,7 @@ class AnimateFailureTest {
     void scriptErrorAtOneFrameStopsTheRunWithTheFrameNumber() {
         Run run = animate(BREAKS_AT_3, "--frames", "0..6");
         assertThat(run.exit()).isEqualTo(ExitCode.SCRIPT_ERROR);
-        assertThat(run.err()).contains("crt: frame 3 (t = 3):\nscene.crt:9:24: error: variable 'nothing_here' is not assigned")
+        assertThat(run.err()).contains("crt: frame 3 (t = 3):\n" + dir.resolve("scene.crt") + ":9:24: error: variable 'nothing_here' is not assigned")
                 .contains("crt: frame 3 failed: the script has errors at t = 3")
                 .contains("3 rendered, 0 skipped, 1 failed")
                 .contains("--resume").contains("--keep-going");
