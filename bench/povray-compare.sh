@@ -1,0 +1,144 @@
+#!/usr/bin/env bash
+# Renders the benchmark scene with CRT and with POV-Ray 3.7, alternating, and prints the ratio of
+# the medians of the whole-process wall-clock times (CRT / POV-Ray; below 1.0 means CRT is faster).
+#
+#   bench/povray-compare.sh [--runs N] [--warmup N] [--width W --height H] [--out DIR]
+#
+# Scenes: scenes/box-field.crt and its hand-written twin bench/povray/box-field.pov.
+# Both use every core (CRT's default; POV-Ray +WT<cores>), one sample per pixel, PNG output.
+# POV-Ray is installed from Debian (package povray) when missing and this runs as root.
+# Results: a table on stdout, and DIR/povray-compare.csv (default DIR: bench/results).
+set -euo pipefail
+
+here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
+root="$(cd "$here/.." && pwd)"
+runs=3
+warmup=1
+width=1280
+height=720
+out="$here/results"
+
+usage() { sed -n '2,11p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'; }
+while [ $# -gt 0 ]; do
+  case "$1" in
+    --runs) runs="$2"; shift 2 ;;
+    --warmup) warmup="$2"; shift 2 ;;
+    --width) width="$2"; shift 2 ;;
+    --height) height="$2"; shift 2 ;;
+    --out) out="$2"; shift 2 ;;
+    -h|--help) usage; exit 0 ;;
+    *) echo "povray-compare: unknown option '$1'" >&2; usage >&2; exit 2 ;;
+  esac
+done
+
+crt_scene="$root/scenes/box-field.crt"
+pov_scene="$here/povray/box-field.pov"
+cores="$(nproc)"
+
+# --- POV-Ray 3.7 --------------------------------------------------------------------------------
+if ! command -v povray >/dev/null 2>&1; then
+  if [ "$(id -u)" = 0 ] && command -v apt-get >/dev/null 2>&1; then
+    echo "povray-compare: installing POV-Ray (Debian package povray)..." >&2
+    export DEBIAN_FRONTEND=noninteractive
+    apt-get update -q >&2
+    apt-get install -y -q povray >&2
+  else
+    echo "povray-compare: POV-Ray is not installed; install it with: sudo apt-get install povray" >&2
+    exit 3
+  fi
+fi
+pov_version="$(povray --version 2>&1 | grep -m1 '^POV-Ray' || echo 'POV-Ray (unknown version)')"
+
+# --- CRT ----------------------------------------------------------------------------------------
+# Build once before timing anything (the launcher builds target/crt.jar when sources changed).
+"$root/crt" --version >/dev/null
+
+mkdir -p "$out"
+out="$(cd "$out" && pwd)"
+csv="$out/povray-compare.csv"
+work="$(mktemp -d)"
+trap 'rm -rf "$work"' EXIT
+
+crt_cmd=("$root/crt" render "$crt_scene" -o "$out/box-field-crt.png" --width "$width" --height "$height" --stats)
+# -D no display, -A no antialiasing (NB: +A0 would turn antialiasing ON with threshold 0),
+# +WT work threads, +FN PNG, File_Gamma=1.0 to write colours as computed like CRT's gamma 1.
+pov_cmd=(povray -D -A "+WT$cores" "+W$width" "+H$height" +FN File_Gamma=1.0 "+I$pov_scene" "+O$out/box-field-povray.png")
+
+now() { date +%s.%N; }
+
+# Runs a command, writes its whole-process wall time in seconds to stdout; its output goes to $2.
+timed() {
+  local log="$1"; shift
+  local t0 t1
+  t0="$(now)"
+  if ! "$@" >"$log" 2>&1; then
+    echo "povray-compare: command failed: $*" >&2
+    tail -20 "$log" >&2
+    exit 1
+  fi
+  t1="$(now)"
+  echo "$t0 $t1" | awk '{printf "%.3f", $2 - $1}'
+}
+
+median() { printf '%s\n' "$@" | sort -g | awk '{a[NR]=$1} END {print (NR % 2) ? a[(NR+1)/2] : (a[NR/2] + a[NR/2+1]) / 2}'; }
+
+echo "machine: $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2- | sed 's/^ //'), $cores cores, $(awk '/MemTotal/ {printf "%.0f GiB", $2/1048576}' /proc/meminfo)"
+echo "java:    $(java -version 2>&1 | head -1)"
+echo "povray:  $pov_version"
+echo "scene:   box-field, ${width}x${height}, 1 sample per pixel, recursion depth 5 (POV-Ray max_trace_level 6)"
+echo "load:    $(cut -d' ' -f1-3 /proc/loadavg) (1, 5, 15 min) before the runs"
+echo "CRT:     ${crt_cmd[*]}"
+echo "POV-Ray: (cd $out &&) ${pov_cmd[*]}"
+echo
+
+for ((i = 1; i <= warmup; i++)); do
+  echo "warm-up $i (not counted)..."
+  timed "$work/crt.log" "${crt_cmd[@]}" >/dev/null
+  (cd "$out" && timed "$work/pov.log" "${pov_cmd[@]}") >/dev/null
+done
+
+crt_times=()
+pov_times=()
+mrays=()
+echo "run,crt_s,povray_s,crt_mrays_per_s" >"$csv"
+printf '%-5s %10s %10s %12s\n' run "CRT s" "POV-Ray s" "CRT Mrays/s"
+for ((i = 1; i <= runs; i++)); do
+  # alternate which one goes first, so that neither always runs right after the other
+  if ((i % 2)); then
+    c="$(timed "$work/crt.log" "${crt_cmd[@]}")"
+    p="$(cd "$out" && timed "$work/pov.log" "${pov_cmd[@]}")"
+  else
+    p="$(cd "$out" && timed "$work/pov.log" "${pov_cmd[@]}")"
+    c="$(timed "$work/crt.log" "${crt_cmd[@]}")"
+  fi
+  m="$(awk '/Mrays\/s/ {print $2}' "$work/crt.log" | tail -1)"
+  crt_times+=("$c")
+  pov_times+=("$p")
+  mrays+=("${m:-0}")
+  printf '%-5s %10s %10s %12s\n' "$i" "$c" "$p" "${m:-?}"
+  echo "$i,$c,$p,${m:-}" >>"$csv"
+done
+
+mc="$(median "${crt_times[@]}")"
+mp="$(median "${pov_times[@]}")"
+mm="$(median "${mrays[@]}")"
+ratio="$(awk -v c="$mc" -v p="$mp" 'BEGIN {printf "%.2f", c / p}')"
+printf '%-5s %10s %10s %12s\n' median "$mc" "$mp" "$mm"
+echo "median,$mc,$mp,$mm" >>"$csv"
+echo
+echo "CRT last run --stats:"
+sed -n '/^rays/,$p' "$work/crt.log"
+echo "POV-Ray last run:"
+grep -E 'Trace Time|Parse Time|Rays:|Shadow Ray Tests' "$work/pov.log" | sed 's/^/  /'
+echo
+echo "ratio CRT / POV-Ray (median of $runs whole-process times): $ratio"
+if awk -v r="$ratio" 'BEGIN {exit !(r <= 1.0)}'; then
+  echo "goal met: CRT takes at most POV-Ray's time"
+else
+  echo "goal NOT met: CRT takes longer than POV-Ray"
+fi
+echo "images: $out/box-field-crt.png and $out/box-field-povray.png"
+if [ -f "$out/box-field-crt.png" ] && [ -f "$out/box-field-povray.png" ]; then
+  echo "difference: $(java "$here/tools/ImageCompare.java" "$out/box-field-crt.png" "$out/box-field-povray.png" 2>&1)"
+fi
+echo "load:    $(cut -d' ' -f1-3 /proc/loadavg) (1, 5, 15 min) after the runs"
