@@ -1,11 +1,19 @@
 package dev.crt.image;
 
 import dev.crt.scene.Picture;
+import java.awt.image.BufferedImage;
+import java.io.ByteArrayInputStream;
 import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
+import javax.imageio.ImageIO;
 
 /** Reading pictures that scenes use (panoramas, later textures). */
 public final class PictureFiles {
+    private static final long MAX_PIXELS = 1L << 28;
+
     private PictureFiles() {}
 
     /**
@@ -13,6 +21,86 @@ public final class PictureFiles {
      * @throws IOException with a plain sentence when the file cannot be read or decoded
      */
     public static Picture read(Path file) throws IOException {
-        throw new UnsupportedOperationException("lands with issue 2");
+        byte[] bytes;
+        try {
+            bytes = Files.readAllBytes(file);
+        } catch (NoSuchFileException e) {
+            throw new IOException("file " + file + " does not exist");
+        } catch (IOException | RuntimeException e) {
+            throw new IOException("cannot read " + file + " (" + e.getClass().getSimpleName() + ")");
+        }
+        try {
+            if (bytes.length >= 2 && bytes[0] == 'P' && bytes[1] == '6') return readPpm(bytes, file);
+            BufferedImage image = ImageIO.read(new ByteArrayInputStream(bytes));
+            if (image == null) throw new IOException(file + " is not an image CRT can decode (PNG, JPEG, GIF, BMP or PPM)");
+            return fromImage(image, file);
+        } catch (IOException e) {
+            throw e;
+        } catch (RuntimeException | OutOfMemoryError e) {
+            // Decoders throw all sorts of unchecked exceptions on damaged files.
+            throw new IOException(file + " is damaged or not an image CRT can decode");
+        }
+    }
+
+    private static Picture fromImage(BufferedImage image, Path file) throws IOException {
+        int w = image.getWidth(), h = image.getHeight();
+        checkSize(w, h, file);
+        float[] rgb = new float[w * h * 3];
+        int[] row = new int[w];
+        for (int y = 0; y < h; y++) {
+            image.getRGB(0, y, w, 1, row, 0, w);
+            for (int x = 0; x < w; x++) {
+                int p = row[x], i = (y * w + x) * 3;
+                rgb[i] = ((p >> 16) & 0xFF) / 255f;
+                rgb[i + 1] = ((p >> 8) & 0xFF) / 255f;
+                rgb[i + 2] = (p & 0xFF) / 255f;
+            }
+        }
+        return new Picture(w, h, rgb);
+    }
+
+    /** Binary PPM (P6): header "P6 width height maxval", comments with '#', 1 or 2 bytes per sample. */
+    private static Picture readPpm(byte[] bytes, Path file) throws IOException {
+        int[] pos = {2};
+        int w = headerNumber(bytes, pos, file), h = headerNumber(bytes, pos, file), max = headerNumber(bytes, pos, file);
+        if (max < 1 || max > 65535) throw new IOException(file + " is a PPM with a bad maximum value " + max);
+        checkSize(w, h, file);
+        int start = pos[0] + 1;
+        int bytesPerSample = max < 256 ? 1 : 2;
+        long needed = (long) w * h * 3 * bytesPerSample;
+        if (start > bytes.length || bytes.length - start < needed) throw new IOException(file + " is a truncated PPM file");
+        float[] rgb = new float[w * h * 3];
+        for (int i = 0; i < rgb.length; i++) {
+            int v = bytesPerSample == 1 ? bytes[start + i] & 0xFF
+                    : ((bytes[start + 2 * i] & 0xFF) << 8) | (bytes[start + 2 * i + 1] & 0xFF);
+            rgb[i] = Math.min(1f, v / (float) max);
+        }
+        return new Picture(w, h, rgb);
+    }
+
+    private static int headerNumber(byte[] bytes, int[] pos, Path file) throws IOException {
+        int i = pos[0];
+        while (i < bytes.length) {
+            if (bytes[i] == '#') {
+                while (i < bytes.length && bytes[i] != '\n') i++;
+            } else if (Character.isWhitespace(bytes[i])) {
+                i++;
+            } else {
+                break;
+            }
+        }
+        int startDigits = i;
+        long value = 0;
+        while (i < bytes.length && bytes[i] >= '0' && bytes[i] <= '9' && i - startDigits < 10) value = value * 10 + (bytes[i++] - '0');
+        if (i == startDigits || value > Integer.MAX_VALUE) {
+            throw new IOException(file + " has a damaged PPM header near byte " + i + " ("
+                    + new String(bytes, startDigits, Math.min(8, bytes.length - startDigits), StandardCharsets.US_ASCII).strip() + ")");
+        }
+        pos[0] = i;
+        return (int) value;
+    }
+
+    private static void checkSize(int w, int h, Path file) throws IOException {
+        if (w < 1 || h < 1 || (long) w * h > MAX_PIXELS) throw new IOException(file + " has an unusable size " + w + "x" + h);
     }
 }

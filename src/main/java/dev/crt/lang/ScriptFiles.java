@@ -1,13 +1,52 @@
 package dev.crt.lang;
 
 import java.io.IOException;
+import java.nio.ByteBuffer;
+import java.nio.CharBuffer;
+import java.nio.charset.CharsetDecoder;
+import java.nio.charset.CoderResult;
+import java.nio.charset.CodingErrorAction;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
 import java.nio.file.Path;
 
-/** Reads script files into Sources. */
+/** Reading script files as UTF-8 text. */
 public final class ScriptFiles {
+    private static final byte[] BOM = {(byte) 0xEF, (byte) 0xBB, (byte) 0xBF};
+
     private ScriptFiles() {}
 
+    /**
+     * Reads {@code file} as UTF-8 without a leading byte-order mark. Bytes that are not UTF-8 text
+     * (malformed sequences, NUL bytes of a binary file) do not throw: the Source then carries the
+     * decoding problem, which compiling reports as a diagnostic at 1:1.
+     * @throws IOException only when the file cannot be read at all
+     */
     public static Source read(Path file) throws IOException {
-        throw new UnsupportedOperationException("lands with issue 2");
+        byte[] bytes = Files.readAllBytes(file);
+        int skip = startsWithBom(bytes) ? BOM.length : 0;
+        String name = file.getFileName() == null ? file.toString() : file.getFileName().toString();
+        ByteBuffer in = ByteBuffer.wrap(bytes, skip, bytes.length - skip);
+        CharsetDecoder decoder = StandardCharsets.UTF_8.newDecoder()
+                .onMalformedInput(CodingErrorAction.REPORT)
+                .onUnmappableCharacter(CodingErrorAction.REPORT);
+        CharBuffer out = CharBuffer.allocate(bytes.length);
+        CoderResult result = decoder.decode(in, out, true);
+        if (result.isError()) {
+            String lossy = new String(bytes, skip, bytes.length - skip, StandardCharsets.UTF_8);
+            return new Source(name, lossy, file, "not a text file (invalid UTF-8 at byte " + in.position() + ")");
+        }
+        decoder.flush(out);
+        String text = out.flip().toString();
+        int nul = text.indexOf('\0');
+        if (nul >= 0) {
+            int byteOffset = skip + text.substring(0, nul).getBytes(StandardCharsets.UTF_8).length;
+            return new Source(name, text, file, "not a text file (NUL byte at byte " + byteOffset + ")");
+        }
+        return new Source(name, text, file);
+    }
+
+    private static boolean startsWithBom(byte[] bytes) {
+        return bytes.length >= 3 && bytes[0] == BOM[0] && bytes[1] == BOM[1] && bytes[2] == BOM[2];
     }
 }

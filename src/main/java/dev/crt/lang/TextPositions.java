@@ -1,0 +1,74 @@
+package dev.crt.lang;
+
+import dev.crt.scene.SourceSpan;
+import java.util.Arrays;
+
+/**
+ * Turns character offsets of a script into 1-based lines and columns (a CR LF pair, a LF or a CR
+ * is one line break; every character, a tab too, is one column), and the code-point indices ANTLR
+ * reports into character offsets.
+ */
+public final class TextPositions {
+    private final String file;
+    private final String text;
+    private final int[] lineStarts;
+    // Character offset of each code point, only when the text has surrogate pairs (else identity).
+    private final int[] charOfCodePoint;
+
+    public TextPositions(String file, String text) {
+        this.file = file;
+        this.text = text;
+        this.lineStarts = lineStarts(text);
+        this.charOfCodePoint = codePointOffsets(text);
+    }
+
+    private static int[] lineStarts(String text) {
+        int[] starts = new int[16];
+        int count = 1;
+        int n = text.length();
+        for (int i = 0; i < n; i++) {
+            char c = text.charAt(i);
+            if (c == '\n' || c == '\r') {
+                if (c == '\r' && i + 1 < n && text.charAt(i + 1) == '\n') i++;
+                if (count == starts.length) starts = Arrays.copyOf(starts, count * 2);
+                starts[count++] = i + 1;
+            }
+        }
+        return Arrays.copyOf(starts, count);
+    }
+
+    private static int[] codePointOffsets(String text) {
+        int n = text.length();
+        boolean surrogates = false;
+        for (int i = 0; i < n && !surrogates; i++) surrogates = Character.isHighSurrogate(text.charAt(i));
+        if (!surrogates) return null;
+        int[] offsets = new int[text.codePointCount(0, n) + 1];
+        int cp = 0;
+        for (int i = 0; i < n; i += Character.charCount(text.codePointAt(i))) offsets[cp++] = i;
+        offsets[cp] = n;
+        return offsets;
+    }
+
+    public String file() { return file; }
+
+    public String text() { return text; }
+
+    /** The character offset of the code point at {@code index} (ANTLR counts code points). */
+    public int charOffset(int codePointIndex) {
+        if (charOfCodePoint == null) return Math.min(Math.max(codePointIndex, 0), text.length());
+        return charOfCodePoint[Math.min(Math.max(codePointIndex, 0), charOfCodePoint.length - 1)];
+    }
+
+    /** The span of characters [start, end), with the line and column of {@code start}. */
+    public SourceSpan span(int start, int end) {
+        start = Math.min(Math.max(start, 0), text.length());
+        end = Math.min(Math.max(end, start), text.length());
+        int line = lineOf(start);
+        return new SourceSpan(file, line + 1, start - lineStarts[line] + 1, start, end);
+    }
+
+    private int lineOf(int offset) {
+        int i = Arrays.binarySearch(lineStarts, offset);
+        return i >= 0 ? i : -i - 2;
+    }
+}

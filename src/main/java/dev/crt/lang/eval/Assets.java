@@ -1,0 +1,79 @@
+package dev.crt.lang.eval;
+
+import dev.crt.image.PictureFiles;
+import dev.crt.scene.PanoramaBackground;
+import dev.crt.scene.Picture;
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.InvalidPathException;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+
+/**
+ * Finds and decodes the files a script names (section 11): an existing absolute path as given,
+ * else relative to the script's folder, else for a leading '/' under each --assets folder and
+ * the assets CRT ships (the folder named by the system property {@code crt.assets}, when set).
+ */
+final class Assets {
+    /** A file that is missing or cannot be decoded, said in a sentence for the diagnostic. */
+    static final class AssetProblem extends Exception {
+        AssetProblem(String message) { super(message, null, false, false); }
+    }
+
+    private final Path scriptFolder;
+    private final List<Path> assetFolders;
+    private final Map<Path, Picture> decoded = new HashMap<>();
+
+    Assets(Path scriptFolder, List<Path> assetDirs) {
+        this.scriptFolder = scriptFolder != null ? scriptFolder : Path.of("").toAbsolutePath();
+        List<Path> folders = new ArrayList<>(assetDirs);
+        String shipped = System.getProperty("crt.assets");
+        if (shipped != null && !shipped.isBlank()) folders.add(Path.of(shipped));
+        this.assetFolders = List.copyOf(folders);
+    }
+
+    PanoramaBackground panorama(String name, double angle) throws AssetProblem {
+        Path file = find(name, "panorama");
+        Picture picture = decoded.get(file);
+        if (picture == null) {
+            try {
+                picture = PictureFiles.read(file);
+            } catch (IOException e) {
+                throw new AssetProblem("cannot use panorama '" + name + "': " + e.getMessage());
+            }
+            decoded.put(file, picture);
+        }
+        return new PanoramaBackground(file.toString(), picture, angle);
+    }
+
+    private Path find(String name, String what) throws AssetProblem {
+        if (name.isEmpty()) throw new AssetProblem("the " + what + " file name is empty");
+        List<Path> searched = new ArrayList<>();
+        try {
+            Path given = Path.of(name);
+            if (given.isAbsolute()) {
+                if (Files.isRegularFile(given)) return given;
+                searched.add(given);
+            }
+            String relative = name.startsWith("/") ? name.replaceFirst("^/+", "") : name;
+            Path inScriptFolder = scriptFolder.resolve(relative).normalize();
+            if (Files.isRegularFile(inScriptFolder)) return inScriptFolder;
+            searched.add(inScriptFolder);
+            if (name.startsWith("/")) {
+                for (Path folder : assetFolders) {
+                    Path candidate = folder.resolve(relative).normalize();
+                    if (Files.isRegularFile(candidate)) return candidate;
+                    searched.add(candidate);
+                }
+            }
+        } catch (InvalidPathException e) {
+            throw new AssetProblem(what + " file name '" + name + "' is not a valid path");
+        }
+        List<String> places = new ArrayList<>();
+        for (Path p : searched) places.add(p.toString());
+        throw new AssetProblem(what + " file '" + name + "' not found; looked for " + String.join(", ", places));
+    }
+}

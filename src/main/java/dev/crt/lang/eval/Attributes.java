@@ -1,0 +1,177 @@
+package dev.crt.lang.eval;
+
+import dev.crt.geom.Vec3;
+import dev.crt.lang.value.BackgroundValue;
+import dev.crt.lang.value.CameraValue;
+import dev.crt.lang.value.ColorValue;
+import dev.crt.lang.value.MaterialValue;
+import dev.crt.lang.value.NumberValue;
+import dev.crt.lang.value.StringValue;
+import dev.crt.lang.value.Value;
+import dev.crt.lang.value.VectorValue;
+import dev.crt.scene.Background;
+import dev.crt.scene.Camera;
+import dev.crt.scene.Material;
+import dev.crt.scene.Rgb;
+import dev.crt.scene.SourceSpan;
+import java.util.LinkedHashMap;
+import java.util.Map;
+
+/**
+ * The evaluated attributes of one object literal, read back with type and range checks. A failed
+ * check is reported at the attribute and the object fails once every attribute has been checked,
+ * so that one look at the diagnostics shows all the mistakes of an object.
+ */
+final class Attributes {
+    /** One attribute as written: its value and where it stands. */
+    record Given(Value value, SourceSpan span) {}
+
+    /** An allowed interval of numbers, with the words that explain it. */
+    record Range(double low, boolean lowOpen, double high, boolean highOpen) {
+        static final Range ANY = new Range(Double.NEGATIVE_INFINITY, false, Double.POSITIVE_INFINITY, false);
+        static final Range NOT_NEGATIVE = new Range(0, false, Double.POSITIVE_INFINITY, false);
+        static final Range POSITIVE = new Range(0, true, Double.POSITIVE_INFINITY, false);
+        static final Range UNIT = new Range(0, false, 1, false);
+
+        boolean contains(double v) {
+            return (lowOpen ? v > low : v >= low) && (highOpen ? v < high : v <= high);
+        }
+
+        String describe() {
+            if (high == Double.POSITIVE_INFINITY) return (lowOpen ? "> " : ">= ") + NumberValue.format(low);
+            return "in " + (lowOpen ? "(" : "[") + NumberValue.format(low) + ", " + NumberValue.format(high)
+                    + (highOpen ? ")" : "]");
+        }
+    }
+
+    private final Evaluator evaluator;
+    private final String type;
+    private final SourceSpan typeSpan;
+    private final Map<String, Given> given = new LinkedHashMap<>();
+    private final SourceSpan objectSpan;
+    private boolean failed;
+
+    Attributes(Evaluator evaluator, String type, SourceSpan typeSpan, SourceSpan objectSpan) {
+        this.evaluator = evaluator;
+        this.type = type;
+        this.typeSpan = typeSpan;
+        this.objectSpan = objectSpan;
+    }
+
+    void put(String name, Given g) { given.put(name, g); }
+
+    void markFailed() { failed = true; }
+
+    boolean has(String name) { return given.containsKey(name); }
+
+    Map<String, Given> given() { return given; }
+
+    SourceSpan typeSpan() { return typeSpan; }
+
+    /** The whole literal, from the type name to the closing brace. */
+    SourceSpan objectSpan() { return objectSpan; }
+
+    SourceSpan spanOf(String name) { return given.containsKey(name) ? given.get(name).span() : typeSpan; }
+
+    /** Throws once the object has been fully checked, if anything about it was wrong. */
+    void finish() {
+        if (failed) throw Failed.INSTANCE;
+    }
+
+    void error(String name, String message) {
+        failed = true;
+        evaluator.report(evaluator.error(message, spanOf(name)));
+    }
+
+    private Value required(String name) {
+        Given g = given.get(name);
+        if (g != null) return g.value();
+        failed = true;
+        evaluator.report(evaluator.error(type + " needs the attribute '" + name + "'", typeSpan));
+        return null;
+    }
+
+    private void wrongType(String name, String expected, Value got) {
+        error(name, "attribute '" + name + "' of " + type + " expects " + expected + ", got " + got.typeName());
+    }
+
+    Vec3 vector(String name, Vec3 fallback) {
+        Value v = fallback == null ? required(name) : given.containsKey(name) ? given.get(name).value() : null;
+        if (v == null) return fallback != null ? fallback : Vec3.ZERO;
+        if (v instanceof VectorValue vec) return vec.vector();
+        wrongType(name, "a vec3", v);
+        return Vec3.ZERO;
+    }
+
+    Rgb color(String name, Rgb fallback) {
+        Given g = given.get(name);
+        if (g == null) return fallback;
+        if (g.value() instanceof ColorValue c) return c.color();
+        wrongType(name, "an rgb colour", g.value());
+        return fallback;
+    }
+
+    double number(String name, double fallback, Range range) {
+        Given g = given.get(name);
+        if (g == null) return fallback;
+        if (!(g.value() instanceof NumberValue n)) {
+            wrongType(name, "a number", g.value());
+            return fallback;
+        }
+        if (!range.contains(n.value())) {
+            error(name, name + " must be " + range.describe() + ", got " + n);
+            return fallback;
+        }
+        return n.value();
+    }
+
+    int integer(String name, int fallback, int minimum) {
+        Given g = given.get(name);
+        if (g == null) return fallback;
+        if (!(g.value() instanceof NumberValue n)) {
+            wrongType(name, "an integer", g.value());
+            return fallback;
+        }
+        if (!n.integral()) {
+            error(name, "attribute '" + name + "' of " + type + " expects an integer, got the float " + n);
+            return fallback;
+        }
+        if (n.value() < minimum || n.value() > Integer.MAX_VALUE) {
+            error(name, name + " must be an integer >= " + minimum + ", got " + n);
+            return fallback;
+        }
+        return (int) n.value();
+    }
+
+    String string(String name, String fallback) {
+        Given g = given.get(name);
+        if (g == null) return fallback;
+        if (g.value() instanceof StringValue s) return s.value();
+        wrongType(name, "a string", g.value());
+        return fallback;
+    }
+
+    Material material(String name) {
+        Given g = given.get(name);
+        if (g == null) return Material.DEFAULT;
+        if (g.value() instanceof MaterialValue m) return m.material();
+        wrongType(name, "a material", g.value());
+        return Material.DEFAULT;
+    }
+
+    Camera camera(String name) {
+        Given g = given.get(name);
+        if (g == null) return null;
+        if (g.value() instanceof CameraValue c) return c.camera();
+        wrongType(name, "a camera", g.value());
+        return null;
+    }
+
+    Background background(String name) {
+        Given g = given.get(name);
+        if (g == null) return null;
+        if (g.value() instanceof BackgroundValue b) return b.background();
+        wrongType(name, "a background", g.value());
+        return null;
+    }
+}

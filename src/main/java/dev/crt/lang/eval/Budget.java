@@ -1,0 +1,51 @@
+package dev.crt.lang.eval;
+
+import java.time.Duration;
+
+/**
+ * The evaluation budget: loop iterations in total and wall-clock time. Loops and macro calls tick
+ * it; the clock is read only every 1024 ticks so that checking costs next to nothing.
+ */
+final class Budget {
+    private final long loopLimit;
+    private final long timeLimitNanos;
+    private final long startNanos;
+    private final Duration timeLimit;
+    private long iterations;
+    private int ticks;
+    private volatile boolean cancelled;
+
+    Budget(long loopLimit, Duration timeLimit) {
+        this.loopLimit = loopLimit;
+        this.timeLimit = timeLimit;
+        this.timeLimitNanos = timeLimit.toNanos();
+        this.startNanos = System.nanoTime();
+    }
+
+    /** Why evaluation must stop now, or null to go on. */
+    String loopIteration() {
+        if (++iterations > loopLimit) {
+            return String.format("evaluation stopped: loops ran %,d iterations (is the loop condition ever false?)",
+                    loopLimit);
+        }
+        return tick();
+    }
+
+    /** Why evaluation must stop now, or null to go on. */
+    String tick() {
+        if ((++ticks & 1023) != 0) return null;
+        if (cancelled) return "evaluation stopped: the compile was cancelled";
+        if (System.nanoTime() - startNanos > timeLimitNanos) {
+            return "evaluation stopped: it took longer than the time budget of " + describe(timeLimit)
+                    + " (is a loop or a recursion endless?)";
+        }
+        return null;
+    }
+
+    void cancel() { cancelled = true; }
+
+    private static String describe(Duration d) {
+        long ms = d.toMillis();
+        return ms % 1000 == 0 ? ms / 1000 + " s" : ms + " ms";
+    }
+}

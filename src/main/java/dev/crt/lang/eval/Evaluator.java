@@ -1,0 +1,660 @@
+package dev.crt.lang.eval;
+
+import dev.crt.geom.Vec3;
+import dev.crt.lang.CompileOptions;
+import dev.crt.lang.Diagnostic;
+import dev.crt.lang.Severity;
+import dev.crt.lang.TextPositions;
+import dev.crt.lang.parser.CRTBaseVisitor;
+import dev.crt.lang.parser.CRTParser;
+import dev.crt.lang.value.BooleanValue;
+import dev.crt.lang.value.ColorValue;
+import dev.crt.lang.value.EntityValue;
+import dev.crt.lang.value.ListValue;
+import dev.crt.lang.value.MacroValue;
+import dev.crt.lang.value.NumberValue;
+import dev.crt.lang.value.StringValue;
+import dev.crt.lang.value.Value;
+import dev.crt.lang.value.VectorValue;
+import dev.crt.scene.Csg;
+import dev.crt.scene.CsgOperation;
+import dev.crt.scene.Entity;
+import dev.crt.scene.Scene;
+import dev.crt.scene.SourceSpan;
+import dev.crt.geom.Transform;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.HashSet;
+import java.util.LinkedHashSet;
+import java.util.List;
+import java.util.Map;
+import java.util.Random;
+import java.util.Set;
+import org.antlr.v4.runtime.ParserRuleContext;
+import org.antlr.v4.runtime.Token;
+import org.antlr.v4.runtime.tree.TerminalNode;
+
+/**
+ * Runs a parsed script: statements top to bottom, expressions by the rules of the language
+ * reference, and collects the entities the Scene blocks place.
+ */
+public final class Evaluator extends CRTBaseVisitor<Value> {
+    static final int MAX_ERRORS = 20;
+    static final int MAX_MACRO_DEPTH = 256;
+    // Seeded identically for every compile: rand() gives the same numbers on every run.
+    private static final long RANDOM_SEED = 2015;
+
+    /** Where a statement's value goes: nowhere (top level), into the scene, or into a macro's result. */
+    private enum Place { TOP, SCENE, MACRO }
+
+    private record Frame(String macro, SourceSpan call) {}
+
+    private final TextPositions positions;
+    private final Budget budget;
+    private final Random random = new Random(RANDOM_SEED);
+    private final ObjectBuilder objects;
+    private final SettingsState settings;
+    private final List<Diagnostic> diagnostics = new ArrayList<>();
+    private final Set<String> warned = new HashSet<>();
+    private final Map<String, Value> globals = new HashMap<>();
+    private Map<String, Value> locals;
+    private final List<Frame> callStack = new ArrayList<>();
+    private final List<EntityValue> placed = new ArrayList<>();
+    private boolean sawScene;
+    private int errors;
+
+    public Evaluator(TextPositions positions, CompileOptions options, Path scriptFolder) {
+        this.positions = positions;
+        this.budget = new Budget(options.loopBudget(), options.timeBudget());
+        this.objects = new ObjectBuilder(this, new Assets(scriptFolder, options.assetDirs()));
+        this.settings = new SettingsState();
+        globals.put("t", NumberValue.ofFloat(options.time()));
+        globals.put("pi", NumberValue.ofFloat(Math.PI));
+    }
+
+    /** Asks a running evaluation to stop soon (another thread may call it). */
+    public void cancel() { budget.cancel(); }
+
+    /** Runs the script; the scene is null when there were errors. Diagnostics are in source order. */
+    public Scene run(CRTParser.ScriptContext script, String sourceName) {
+        try {
+            for (CRTParser.StatementContext statement : script.statement()) {
+                runRecovering(statement, Place.TOP, null);
+            }
+        } catch (EvaluationStopped stop) {
+            record(Severity.ERROR, stop.getMessage(), stop.span(), stop.callChain());
+        }
+        if (errors > 0) return null;
+        if (!sawScene) warn("no Scene block: the picture shows only the background", positions.span(0, 0));
+        if (!settings.hasCamera()) {
+            warn("no camera in Settings: using the default camera at vec3(0, 0, -5) pointing at the origin",
+                    settings.firstBlock() != null ? settings.firstBlock() : positions.span(0, 0));
+        }
+        List<Entity> entities = new ArrayList<>(placed.size());
+        for (EntityValue e : placed) entities.add(e.entity());
+        return new Scene(sourceName, settings.build(), entities);
+    }
+
+    /** Every diagnostic so far, in source order. */
+    public List<Diagnostic> diagnostics() {
+        List<Diagnostic> sorted = new ArrayList<>(diagnostics);
+        sorted.sort(java.util.Comparator.comparingInt(d -> d.span().start()));
+        return sorted;
+    }
+
+    // ---- statements ----------------------------------------------------------------------------
+
+    private void runRecovering(CRTParser.StatementContext statement, Place place, List<EntityValue> out) {
+        try {
+            execute(statement, place, out);
+        } catch (EvaluationStopped stop) {
+            throw stop;
+        } catch (ScriptError e) {
+            report(e);
+            markFailed(statement);
+        } catch (Failed f) {
+            markFailed(statement);
+        }
+    }
+
+    /** A failed assignment leaves its variable failed, so reading it later adds no second error. */
+    private void markFailed(CRTParser.StatementContext statement) {
+        if (statement instanceof CRTParser.ExpressionStatementContext s
+                && s.expression() instanceof CRTParser.AssignmentContext a) {
+            String name = a.IDENT().getText();
+            if (!name.equals("t")) scope().put(name, null);
+        }
+    }
+
+    private void executeAll(List<CRTParser.StatementContext> statements, Place place, List<EntityValue> out) {
+        for (CRTParser.StatementContext s : statements) execute(s, place, out);
+    }
+
+    private void execute(CRTParser.StatementContext statement, Place place, List<EntityValue> out) {
+        if (statement instanceof CRTParser.ExpressionStatementContext s) {
+            CRTParser.ExpressionContext e = s.expression();
+            Value value = visit(e);
+            if (e instanceof CRTParser.AssignmentContext) return;
+            if (place == Place.SCENE) placeInScene(value, e);
+            else if (place == Place.MACRO) contribute(value, out);
+        } else if (statement instanceof CRTParser.WhileLoopContext w) {
+            runWhile(w, place, out);
+        } else if (statement instanceof CRTParser.IfStatementContext i) {
+            runIf(i.ifChain(), place, out);
+        } else if (statement instanceof CRTParser.SceneBlockContext scene) {
+            if (place == Place.MACRO) throw error("a Scene block cannot be inside a macro", span(scene.SCENE().getSymbol()));
+            sawScene = true;
+            for (CRTParser.StatementContext s : scene.statement()) {
+                if (place == Place.TOP) runRecovering(s, Place.SCENE, null);
+                else execute(s, Place.SCENE, null);
+            }
+        } else if (statement instanceof CRTParser.SettingsBlockContext block) {
+            if (place == Place.MACRO) throw error("a Settings block cannot be inside a macro", span(block.SETTINGS().getSymbol()));
+            SourceSpan keyword = span(block.SETTINGS().getSymbol());
+            settings.apply(objects.evaluate("Settings", SettingsState.ATTRIBUTES, block.attribute(), keyword, span(block)));
+        }
+    }
+
+    private void runWhile(CRTParser.WhileLoopContext loop, Place place, List<EntityValue> out) {
+        List<CRTParser.StatementContext> body = loop.block().statement();
+        while (condition(loop.expression(), "while")) {
+            String stop = budget.loopIteration();
+            if (stop != null) throw new EvaluationStopped(stop, span(loop.WHILE().getSymbol()), callChain());
+            executeAll(body, place, out);
+        }
+    }
+
+    private void runIf(CRTParser.IfChainContext chain, Place place, List<EntityValue> out) {
+        if (condition(chain.expression(), "if")) {
+            executeAll(chain.block(0).statement(), place, out);
+        } else if (chain.ifChain() != null) {
+            runIf(chain.ifChain(), place, out);
+        } else if (chain.ELSE() != null) {
+            executeAll(chain.block(chain.block().size() - 1).statement(), place, out);
+        }
+    }
+
+    private boolean condition(ParserRuleContext e, String keyword) {
+        Value v = visit(e);
+        if (v instanceof BooleanValue b) return b.value();
+        throw error("the condition of '" + keyword + "' must be a boolean, got " + describe(v), span(e));
+    }
+
+    private void placeInScene(Value value, ParserRuleContext where) {
+        if (value instanceof EntityValue e) {
+            placed.add(e);
+            return;
+        }
+        if (!(value instanceof ListValue list)) throw error("Scene expects entities, got " + describe(value), span(where));
+        List<EntityValue> flat = new ArrayList<>();
+        Value odd = flatten(list, flat);
+        if (odd != null) throw error("Scene expects entities, got a list containing " + describe(odd), span(where));
+        placed.addAll(flat);
+    }
+
+    private static void contribute(Value value, List<EntityValue> out) {
+        if (value instanceof EntityValue e) {
+            out.add(e);
+        } else if (value instanceof ListValue list) {
+            List<EntityValue> flat = new ArrayList<>();
+            if (flatten(list, flat) == null) out.addAll(flat);
+        }
+    }
+
+    /** Adds the entities of a nested list to {@code out}; returns the first value that is not one, or null. */
+    private static Value flatten(ListValue list, List<EntityValue> out) {
+        for (Value item : list.items()) {
+            if (item instanceof EntityValue e) {
+                out.add(e);
+            } else if (item instanceof ListValue inner) {
+                Value odd = flatten(inner, out);
+                if (odd != null) return odd;
+            } else {
+                return item;
+            }
+        }
+        return null;
+    }
+
+    // ---- expressions ---------------------------------------------------------------------------
+
+    @Override
+    public Value visitAssignment(CRTParser.AssignmentContext ctx) {
+        String name = ctx.IDENT().getText();
+        if (name.equals("t")) {
+            throw error("cannot assign to 't': it is the animation time, set from the command line", span(ctx.IDENT().getSymbol()));
+        }
+        Value value = visit(ctx.expression());
+        scope().put(name, value);
+        return value;
+    }
+
+    private Map<String, Value> scope() { return locals != null ? locals : globals; }
+
+    @Override
+    public Value visitPlainExpression(CRTParser.PlainExpressionContext ctx) { return visit(ctx.operation()); }
+
+    @Override
+    public Value visitArithmeticOperation(CRTParser.ArithmeticOperationContext ctx) { return visit(ctx.arithmetic()); }
+
+    @Override
+    public Value visitAtom(CRTParser.AtomContext ctx) { return visit(ctx.primary()); }
+
+    @Override
+    public Value visitParenthesized(CRTParser.ParenthesizedContext ctx) { return visit(ctx.expression()); }
+
+    @Override
+    public Value visitComparison(CRTParser.ComparisonContext ctx) {
+        Value a = visit(ctx.operation(0));
+        Value b = visit(ctx.operation(1));
+        String op = ctx.op.getText();
+        if (op.equals("==") || op.equals("!=")) {
+            if (!a.typeName().equals(b.typeName())) throw badOperands(op, a, b, ctx);
+            boolean equal = a instanceof NumberValue x && b instanceof NumberValue y ? x.value() == y.value() : a.equals(b);
+            return BooleanValue.of(equal == op.equals("=="));
+        }
+        if (!(a instanceof NumberValue x) || !(b instanceof NumberValue y)) throw badOperands(op, a, b, ctx);
+        return BooleanValue.of(switch (op) {
+            case "<" -> x.value() < y.value();
+            case "<=" -> x.value() <= y.value();
+            case ">" -> x.value() > y.value();
+            default -> x.value() >= y.value();
+        });
+    }
+
+    @Override
+    public Value visitAnd(CRTParser.AndContext ctx) {
+        return BooleanValue.of(logical(ctx.operation(0), "&&") && logical(ctx.operation(1), "&&"));
+    }
+
+    @Override
+    public Value visitOr(CRTParser.OrContext ctx) {
+        return BooleanValue.of(logical(ctx.operation(0), "||") || logical(ctx.operation(1), "||"));
+    }
+
+    private boolean logical(ParserRuleContext operand, String op) {
+        Value v = visit(operand);
+        if (v instanceof BooleanValue b) return b.value();
+        throw error("operator '" + op + "' takes booleans, got " + describe(v), span(operand));
+    }
+
+    @Override
+    public Value visitConditional(CRTParser.ConditionalContext ctx) {
+        return condition(ctx.operation(0), "?") ? visit(ctx.operation(1)) : visit(ctx.operation(2));
+    }
+
+    @Override
+    public Value visitNot(CRTParser.NotContext ctx) {
+        Value v = visit(ctx.arithmetic());
+        if (v instanceof BooleanValue b) return BooleanValue.of(!b.value());
+        throw error("operator '!' cannot apply to " + describe(v), span(ctx));
+    }
+
+    @Override
+    public Value visitSign(CRTParser.SignContext ctx) {
+        Value v = visit(ctx.arithmetic());
+        boolean minus = ctx.op.getType() == CRTParser.MINUS;
+        if (v instanceof NumberValue n) return minus ? new NumberValue(-n.value(), n.integral()) : n;
+        if (v instanceof VectorValue vec) return minus ? new VectorValue(vec.vector().negate()) : vec;
+        if (v instanceof ColorValue c) return minus ? new ColorValue(c.color().times(-1)) : c;
+        throw error("operator '" + ctx.op.getText() + "' cannot apply to " + describe(v), span(ctx));
+    }
+
+    @Override
+    public Value visitMultiplicative(CRTParser.MultiplicativeContext ctx) {
+        Value a = visit(ctx.arithmetic(0));
+        Value b = visit(ctx.arithmetic(1));
+        return Arithmetic.multiplicative(ctx.op.getText(), a, b, () -> span(ctx), this);
+    }
+
+    @Override
+    public Value visitAdditive(CRTParser.AdditiveContext ctx) {
+        Value a = visit(ctx.arithmetic(0));
+        Value b = visit(ctx.arithmetic(1));
+        String op = ctx.op.getText();
+        if (a instanceof EntityValue x && b instanceof EntityValue y) {
+            CsgOperation operation = switch (op) {
+                case "+" -> CsgOperation.UNION;
+                case "-" -> CsgOperation.DIFFERENCE;
+                default -> CsgOperation.INTERSECTION;
+            };
+            return EntityValue.of(new Csg(operation, x.entity(), y.entity(), Transform.IDENTITY, span(ctx)));
+        }
+        return Arithmetic.additive(op, a, b, () -> span(ctx), this);
+    }
+
+    @Override
+    public Value visitIndex(CRTParser.IndexContext ctx) {
+        Value target = visit(ctx.arithmetic());
+        Value indexValue = visit(ctx.expression());
+        SourceSpan where = span(ctx.expression());
+        if (!(indexValue instanceof NumberValue n)) throw error("an index must be an integer, got " + describe(indexValue), where);
+        if (!n.integral()) throw error("an index must be an integer, got the float " + n, where);
+        int length;
+        if (target instanceof ListValue list) length = list.items().size();
+        else if (target instanceof VectorValue || target instanceof ColorValue) length = 3;
+        else throw error("cannot index " + describe(target) + ": only lists, vec3 and rgb have elements", span(ctx));
+        double i = n.value();
+        if (i < 0 || i >= length) {
+            throw error("index " + n + " is out of range for a " + target.typeName() + " of length " + length, where);
+        }
+        int k = (int) i;
+        if (target instanceof ListValue list) return list.items().get(k);
+        if (target instanceof VectorValue v) return NumberValue.ofFloat(v.vector().get(k));
+        return NumberValue.ofFloat(((ColorValue) target).color().get(k));
+    }
+
+    @Override
+    public Value visitCall(CRTParser.CallContext ctx) {
+        List<CRTParser.ExpressionContext> argExprs = ctx.expression();
+        if (ctx.arithmetic() instanceof CRTParser.AtomContext atom
+                && atom.primary() instanceof CRTParser.VariableContext variable) {
+            String name = name(variable);
+            Value bound = lookupOrNull(name);
+            if (bound == null && !isAssigned(name) && Builtins.exists(name)) {
+                return callBuiltin(name, argExprs, ctx);
+            }
+            Value callee = visit(variable);
+            return callMacro(name, callee, argExprs, ctx);
+        }
+        return callMacro(null, visit(ctx.arithmetic()), argExprs, ctx);
+    }
+
+    private Value callBuiltin(String name, List<CRTParser.ExpressionContext> argExprs, CRTParser.CallContext ctx) {
+        int arity = Builtins.arity(name);
+        if (argExprs.size() != arity) {
+            throw error(name + " takes " + arity + (arity == 1 ? " argument" : " arguments") + ", "
+                    + Builtins.signature(name) + ", got " + argExprs.size(), span(ctx));
+        }
+        Value[] args = new Value[arity];
+        for (int i = 0; i < arity; i++) args[i] = visit(argExprs.get(i));
+        return Builtins.call(name, new BuiltinCall(name, args, ctx));
+    }
+
+    /** The call site of a built-in, handing it its arguments checked against its signature. */
+    private final class BuiltinCall implements Builtins.Call {
+        private final String name;
+        private final Value[] args;
+        private final CRTParser.CallContext ctx;
+
+        BuiltinCall(String name, Value[] args, CRTParser.CallContext ctx) {
+            this.name = name;
+            this.args = args;
+            this.ctx = ctx;
+        }
+
+        @Override
+        public double number(int i) {
+            if (args[i] instanceof NumberValue n) return n.value();
+            throw wrongArguments();
+        }
+
+        @Override
+        public Vec3 vector(int i) {
+            if (args[i] instanceof VectorValue v) return v.vector();
+            throw wrongArguments();
+        }
+
+        @Override
+        public Value arg(int i) { return args[i]; }
+
+        @Override
+        public ScriptError error(String message) { return Evaluator.this.error(message, span(ctx)); }
+
+        @Override
+        public ScriptError wrongArguments() {
+            StringBuilder given = new StringBuilder(name).append('(');
+            for (int i = 0; i < args.length; i++) given.append(i > 0 ? ", " : "").append(args[i].typeName());
+            return error("wrong arguments: " + name + " takes " + Builtins.signature(name) + ", got " + given + ")");
+        }
+
+        @Override
+        public void warn(String message) { Evaluator.this.warn(message, span(ctx)); }
+
+        @Override
+        public Random random() { return random; }
+    }
+
+    private Value callMacro(String name, Value callee, List<CRTParser.ExpressionContext> argExprs, CRTParser.CallContext ctx) {
+        if (!(callee instanceof MacroValue macro)) {
+            throw error("cannot call " + describe(callee) + (name != null ? " '" + name + "'" : "") + ": only macros and functions take arguments", span(ctx));
+        }
+        String label = name != null ? "macro '" + name + "'" : "the macro";
+        List<String> params = macro.parameters();
+        if (argExprs.size() != params.size()) {
+            throw error(label + " takes " + params.size() + (params.size() == 1 ? " argument" : " arguments")
+                    + " (" + String.join(", ", params) + "), got " + argExprs.size(), span(ctx));
+        }
+        Map<String, Value> scope = new HashMap<>();
+        for (int i = 0; i < params.size(); i++) scope.put(params.get(i), visit(argExprs.get(i)));
+        SourceSpan callSpan = span(ctx);
+        if (callStack.size() >= MAX_MACRO_DEPTH) {
+            throw error("macro calls nested deeper than " + MAX_MACRO_DEPTH + " (endless recursion?)", callSpan);
+        }
+        String stop = budget.tick();
+        if (stop != null) throw new EvaluationStopped(stop, callSpan, callChain());
+        Map<String, Value> saved = locals;
+        locals = scope;
+        callStack.add(new Frame(name != null ? name : "(anonymous)", callSpan));
+        try {
+            List<EntityValue> out = new ArrayList<>();
+            executeAll(macro.body(), Place.MACRO, out);
+            return out.isEmpty() ? ListValue.EMPTY : new ListValue(new ArrayList<>(out));
+        } finally {
+            callStack.remove(callStack.size() - 1);
+            locals = saved;
+        }
+    }
+
+    @Override
+    public Value visitModified(CRTParser.ModifiedContext ctx) {
+        Value target = visit(ctx.arithmetic());
+        for (CRTParser.ModifierContext m : ctx.modifier()) {
+            Value amount = visit(m.arithmetic());
+            EntityValue.ModifierKind kind = switch (m.kind.getType()) {
+                case CRTParser.TRANSLATE -> EntityValue.ModifierKind.TRANSLATE;
+                case CRTParser.ROTATE -> EntityValue.ModifierKind.ROTATE;
+                default -> EntityValue.ModifierKind.SCALE;
+            };
+            target = modify(target, kind, modifierAmount(kind, amount, m), ctx);
+        }
+        return target;
+    }
+
+    private Vec3 modifierAmount(EntityValue.ModifierKind kind, Value amount, CRTParser.ModifierContext m) {
+        String word = m.kind.getText();
+        if (kind == EntityValue.ModifierKind.SCALE) {
+            Vec3 s;
+            if (amount instanceof NumberValue n) s = new Vec3(n.value(), n.value(), n.value());
+            else if (amount instanceof VectorValue v) s = v.vector();
+            else throw error("scale takes a number or a vec3, got " + describe(amount), span(m));
+            if (s.x() == 0 || s.y() == 0 || s.z() == 0) {
+                throw error("scale with a zero component (" + (amount instanceof VectorValue ? amount.toString() : amount + "")
+                        + ") would flatten the entity", span(m));
+            }
+            return s;
+        }
+        if (amount instanceof VectorValue v) return v.vector();
+        throw error(word + " takes a vec3, got " + describe(amount), span(m));
+    }
+
+    private Value modify(Value target, EntityValue.ModifierKind kind, Vec3 amount, CRTParser.ModifiedContext ctx) {
+        if (target instanceof EntityValue e) return e.modified(kind, amount);
+        if (target instanceof ListValue list) {
+            List<Value> moved = new ArrayList<>(list.items().size());
+            for (Value item : list.items()) moved.add(modify(item, kind, amount, ctx));
+            return new ListValue(moved);
+        }
+        throw error("modifiers apply to entities, got " + describe(target), span(ctx.arithmetic()));
+    }
+
+    // ---- primaries -----------------------------------------------------------------------------
+
+    @Override
+    public Value visitIntLiteral(CRTParser.IntLiteralContext ctx) {
+        if (ctx.cached == null) {
+            double v = Double.parseDouble(ctx.INT().getText());
+            ctx.cached = NumberValue.ofInt(v);
+        }
+        return (Value) ctx.cached;
+    }
+
+    @Override
+    public Value visitFloatLiteral(CRTParser.FloatLiteralContext ctx) {
+        if (ctx.cached == null) {
+            double v = Double.parseDouble(ctx.FLOAT().getText());
+            if (!Double.isFinite(v)) throw error("number " + ctx.FLOAT().getText() + " is too large", span(ctx));
+            ctx.cached = NumberValue.ofFloat(v);
+        }
+        return (Value) ctx.cached;
+    }
+
+    @Override
+    public Value visitStringLiteral(CRTParser.StringLiteralContext ctx) {
+        if (ctx.cached == null) ctx.cached = new StringValue(unescape(ctx.STRING().getSymbol()));
+        return (Value) ctx.cached;
+    }
+
+    private String unescape(Token token) {
+        String text = token.getText();
+        StringBuilder out = new StringBuilder(text.length());
+        for (int i = 1; i < text.length() - 1; i++) {
+            char c = text.charAt(i);
+            if (c == '\\') {
+                char next = text.charAt(++i);
+                if (next != '"' && next != '\\') {
+                    int at = positions.charOffset(token.getStartIndex()) + i - 1;
+                    throw error("unknown escape '\\" + next + "' in a string (only \\\" and \\\\ are escapes)",
+                            positions.span(at, at + 2));
+                }
+                out.append(next);
+            } else {
+                out.append(c);
+            }
+        }
+        return out.toString();
+    }
+
+    @Override
+    public Value visitBooleanLiteral(CRTParser.BooleanLiteralContext ctx) {
+        return BooleanValue.of(ctx.TRUE() != null);
+    }
+
+    @Override
+    public Value visitVariable(CRTParser.VariableContext ctx) {
+        String name = name(ctx);
+        Value v = lookupOrNull(name);
+        if (v != null) return v;
+        if (isAssigned(name)) throw Failed.INSTANCE;
+        if (Builtins.exists(name)) {
+            throw error("'" + name + "' is a function: call it as " + Builtins.signature(name), span(ctx));
+        }
+        Set<String> known = new LinkedHashSet<>(globals.keySet());
+        if (locals != null) known.addAll(locals.keySet());
+        throw error("variable '" + name + "' is not assigned" + Spelling.suggestion(name, known), span(ctx));
+    }
+
+    private String name(CRTParser.VariableContext ctx) {
+        if (ctx.cached == null) ctx.cached = ctx.IDENT().getText();
+        return (String) ctx.cached;
+    }
+
+    private Value lookupOrNull(String name) {
+        if (locals != null) {
+            Value v = locals.get(name);
+            if (v != null || locals.containsKey(name)) return v;
+        }
+        return globals.get(name);
+    }
+
+    /** True when the name was assigned, even if that assignment failed. */
+    private boolean isAssigned(String name) {
+        return (locals != null && locals.containsKey(name)) || globals.containsKey(name);
+    }
+
+    @Override
+    public Value visitObject(CRTParser.ObjectContext ctx) {
+        return objects.build(ctx);
+    }
+
+    @Override
+    public Value visitMacro(CRTParser.MacroContext ctx) {
+        if (ctx.cached == null) {
+            List<String> params = new ArrayList<>();
+            for (TerminalNode p : ctx.IDENT()) {
+                String name = p.getText();
+                if (params.contains(name)) throw error("parameter '" + name + "' is named twice", span(p.getSymbol()));
+                if (name.equals("t")) throw error("a parameter cannot be named 't': it is the animation time", span(p.getSymbol()));
+                params.add(name);
+            }
+            ctx.cached = new MacroValue(params, ctx.statement());
+        }
+        return (Value) ctx.cached;
+    }
+
+    @Override
+    public Value visitList(CRTParser.ListContext ctx) {
+        List<CRTParser.ExpressionContext> items = ctx.expression();
+        if (items.isEmpty()) return ListValue.EMPTY;
+        List<Value> values = new ArrayList<>(items.size());
+        for (CRTParser.ExpressionContext e : items) values.add(visit(e));
+        return new ListValue(values);
+    }
+
+    // ---- reporting -----------------------------------------------------------------------------
+
+    SourceSpan span(ParserRuleContext ctx) {
+        int start = positions.charOffset(ctx.getStart().getStartIndex());
+        Token stop = ctx.getStop();
+        int end = stop == null ? start : positions.charOffset(stop.getStopIndex() + 1);
+        return positions.span(start, end);
+    }
+
+    SourceSpan span(Token token) {
+        int start = positions.charOffset(token.getStartIndex());
+        return positions.span(start, positions.charOffset(token.getStopIndex() + 1));
+    }
+
+    ScriptError error(String message, SourceSpan where) { return new ScriptError(message, where, callChain()); }
+
+    private ScriptError badOperands(String op, Value a, Value b, ParserRuleContext ctx) {
+        return Arithmetic.badOperands(op, a, b, span(ctx), this);
+    }
+
+    List<String> callChain() {
+        if (callStack.isEmpty()) return List.of();
+        List<String> chain = new ArrayList<>();
+        int shown = 0;
+        for (int i = callStack.size() - 1; i >= 0; i--) {
+            if (shown == 8 && i > 0) {
+                chain.add("… " + i + " more calls …");
+                i = 0;
+            }
+            Frame f = callStack.get(i);
+            chain.add("in macro '" + f.macro() + "' called at " + f.call().line() + ":" + f.call().column());
+            shown++;
+        }
+        return chain;
+    }
+
+    /** Records an error that does not unwind (an attribute among others); stops after too many. */
+    void report(ScriptError e) {
+        record(Severity.ERROR, e.getMessage(), e.span(), e.callChain());
+        if (++errors >= MAX_ERRORS) {
+            throw new EvaluationStopped("too many errors; stopped after " + MAX_ERRORS, e.span(), List.of());
+        }
+    }
+
+    void warn(String message, SourceSpan where) {
+        if (warned.add(message + "@" + where.start())) record(Severity.WARNING, message, where, callChain());
+    }
+
+    private void record(Severity severity, String message, SourceSpan where, List<String> chain) {
+        diagnostics.add(new Diagnostic(severity, message, where, chain));
+    }
+
+    static String describe(Value v) { return v.typeName(); }
+
+    Random random() { return random; }
+}

@@ -1,0 +1,131 @@
+package dev.crt.lang.syntax;
+
+import dev.crt.lang.TextPositions;
+import dev.crt.lang.parser.CRTParser;
+import dev.crt.scene.SourceSpan;
+import java.util.ArrayList;
+import java.util.List;
+import org.antlr.v4.runtime.DefaultErrorStrategy;
+import org.antlr.v4.runtime.InputMismatchException;
+import org.antlr.v4.runtime.NoViableAltException;
+import org.antlr.v4.runtime.Parser;
+import org.antlr.v4.runtime.ParserRuleContext;
+import org.antlr.v4.runtime.RecognitionException;
+import org.antlr.v4.runtime.Token;
+import org.antlr.v4.runtime.misc.IntervalSet;
+
+/**
+ * ANTLR's recovery (so that later errors are found too) with messages for people: "unexpected
+ * '->'", "expected '}' to close Sphere opened at 3:5", never a dump of token sets.
+ */
+final class HumanErrorStrategy extends DefaultErrorStrategy {
+    private static final int[] EXPRESSION_STARTS = {CRTParser.INT, CRTParser.IDENT, CRTParser.LPAREN};
+
+    private final TextPositions positions;
+
+    HumanErrorStrategy(TextPositions positions) { this.positions = positions; }
+
+    @Override
+    protected void reportNoViableAlternative(Parser parser, NoViableAltException e) {
+        parser.notifyErrorListeners(e.getOffendingToken(), unexpected(parser, e.getOffendingToken(), null), e);
+    }
+
+    @Override
+    protected void reportInputMismatch(Parser parser, InputMismatchException e) {
+        parser.notifyErrorListeners(e.getOffendingToken(),
+                unexpected(parser, e.getOffendingToken(), e.getExpectedTokens()), e);
+    }
+
+    @Override
+    protected void reportUnwantedToken(Parser parser) {
+        if (inErrorRecoveryMode(parser)) return;
+        beginErrorCondition(parser);
+        Token token = parser.getCurrentToken();
+        parser.notifyErrorListeners(token, "unexpected " + describe(token), null);
+    }
+
+    @Override
+    protected void reportMissingToken(Parser parser) {
+        if (inErrorRecoveryMode(parser)) return;
+        beginErrorCondition(parser);
+        Token token = parser.getCurrentToken();
+        IntervalSet expected = getExpectedTokens(parser);
+        String message = expectation(parser, expected);
+        if (token.getType() != Token.EOF) message += " before " + describe(token);
+        parser.notifyErrorListeners(token, message, null);
+    }
+
+    @Override
+    protected void reportFailedPredicate(Parser parser, org.antlr.v4.runtime.FailedPredicateException e) {
+        parser.notifyErrorListeners(e.getOffendingToken(), "unexpected " + describe(e.getOffendingToken()), e);
+    }
+
+    @Override
+    public void reportError(Parser parser, RecognitionException e) {
+        if (inErrorRecoveryMode(parser)) return;
+        super.reportError(parser, e);
+    }
+
+    private String unexpected(Parser parser, Token token, IntervalSet expected) {
+        if (expected == null || expected.isNil()) {
+            return token.getType() == Token.EOF ? "unexpected end of file" : "unexpected " + describe(token);
+        }
+        String expectation = expectation(parser, expected);
+        if (token.getType() == Token.EOF) return expectation;
+        return "unexpected " + describe(token) + "; " + expectation;
+    }
+
+    private String expectation(Parser parser, IntervalSet expected) {
+        if (expected.contains(CRTParser.RBRACE)) {
+            String closes = openedBrace(parser.getContext());
+            if (closes != null) return "expected '}' to close " + closes;
+        }
+        if (expected.size() == 1 && expected.contains(CRTParser.RPAREN)) return "expected ')'";
+        if (expected.size() == 1 && expected.contains(CRTParser.RBRACKET)) return "expected ']'";
+        boolean expression = true;
+        for (int type : EXPRESSION_STARTS) expression &= expected.contains(type);
+        if (expression) return "expected an expression";
+        List<String> names = new ArrayList<>();
+        for (int type : expected.toList()) {
+            if (names.size() == 4) return "expected one of " + String.join(", ", names) + ", …";
+            names.add(tokenName(parser, type));
+        }
+        return names.size() == 1 ? "expected " + names.get(0) : "expected one of " + String.join(", ", names);
+    }
+
+    /** "Sphere opened at 3:5" for the innermost unclosed brace around the parser's position. */
+    private String openedBrace(ParserRuleContext ctx) {
+        for (ParserRuleContext c = ctx; c != null; c = c.getParent()) {
+            String what = null;
+            if (c instanceof CRTParser.ObjectContext o) what = o.NAME().getText();
+            else if (c instanceof CRTParser.SettingsBlockContext) what = "Settings";
+            else if (c instanceof CRTParser.SceneBlockContext) what = "Scene";
+            else if (c instanceof CRTParser.MacroContext) what = "Macro";
+            else if (c instanceof CRTParser.BlockContext) what = "the block";
+            Token start = c.getStart();
+            if (what != null && start != null) {
+                SourceSpan at = positions.span(positions.charOffset(start.getStartIndex()), 0);
+                return what + " opened at " + at.line() + ":" + at.column();
+            }
+        }
+        return null;
+    }
+
+    private static String tokenName(Parser parser, int type) {
+        return switch (type) {
+            case Token.EOF -> "end of file";
+            case CRTParser.IDENT -> "a name";
+            case CRTParser.NAME -> "a type name";
+            case CRTParser.INT, CRTParser.FLOAT -> "a number";
+            case CRTParser.STRING -> "a string";
+            default -> parser.getVocabulary().getDisplayName(type);
+        };
+    }
+
+    static String describe(Token token) {
+        if (token.getType() == Token.EOF) return "end of file";
+        String text = token.getText();
+        if (text.length() > 24) text = text.substring(0, 24) + "…";
+        return "'" + text + "'";
+    }
+}

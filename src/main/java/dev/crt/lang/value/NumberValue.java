@@ -1,0 +1,29 @@
+package dev.crt.lang.value;
+
+/** A number; {@code integral} marks an integer, which is accepted wherever a float is. */
+public record NumberValue(double value, boolean integral) implements Value {
+    private static final NumberValue[] SMALL_INTS = new NumberValue[256];
+
+    static {
+        for (int i = 0; i < SMALL_INTS.length; i++) SMALL_INTS[i] = new NumberValue(i, true);
+    }
+
+    public static NumberValue ofInt(double value) {
+        if (value >= 0 && value < SMALL_INTS.length && value == (int) value) return SMALL_INTS[(int) value];
+        return new NumberValue(value, true);
+    }
+
+    public static NumberValue ofFloat(double value) { return new NumberValue(value, false); }
+
+    @Override
+    public String typeName() { return "number"; }
+
+    @Override
+    public String toString() { return format(value); }
+
+    /** A number as a person writes it: 3, 1.5, -0.25. */
+    public static String format(double v) {
+        if (v == Math.rint(v) && Math.abs(v) < 1e15) return Long.toString((long) v);
+        return Double.toString(v);
+    }
+}
