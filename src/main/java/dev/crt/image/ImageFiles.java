@@ -1,8 +1,18 @@
 package dev.crt.image;
 
+import java.io.BufferedOutputStream;
 import java.io.IOException;
+import java.io.OutputStream;
+import java.nio.channels.Channels;
+import java.nio.channels.FileChannel;
+import java.nio.file.AtomicMoveNotSupportedException;
+import java.nio.file.Files;
 import java.nio.file.Path;
+import java.nio.file.StandardCopyOption;
+import java.nio.file.StandardOpenOption;
+import java.util.Locale;
 import java.util.Map;
+import java.util.concurrent.ThreadLocalRandom;
 
 /** Reading and writing image files; the format follows the file name's extension. */
 public final class ImageFiles {
@@ -15,6 +25,69 @@ public final class ImageFiles {
      * {@code text} becomes PNG text chunks (Title, Author, …) and is ignored by the other formats.
      */
     public static void write(FrameBuffer image, Path out, double gamma, Map<String, String> text) throws IOException {
-        throw new UnsupportedOperationException("lands with issue 3");
+        ImageWriter writer = writerFor(out);
+        Path target = out.toAbsolutePath();
+        Path folder = target.getParent();
+        if (folder == null || !Files.isDirectory(folder)) {
+            throw new IOException("cannot write " + out + ": the folder " + folder + " does not exist");
+        }
+        Path temp = folder.resolve("." + target.getFileName() + ".tmp-"
+                + Long.toHexString(ThreadLocalRandom.current().nextLong() & Long.MAX_VALUE));
+        try {
+            try (FileChannel channel = FileChannel.open(temp, StandardOpenOption.CREATE_NEW, StandardOpenOption.WRITE);
+                    OutputStream stream = new BufferedOutputStream(Channels.newOutputStream(channel), 1 << 16)) {
+                writer.write(image, gamma, text, stream);
+                stream.flush();
+                channel.force(true);
+            }
+            try {
+                Files.move(temp, target, StandardCopyOption.ATOMIC_MOVE, StandardCopyOption.REPLACE_EXISTING);
+            } catch (AtomicMoveNotSupportedException e) {
+                Files.move(temp, target, StandardCopyOption.REPLACE_EXISTING);
+            }
+        } catch (IOException | RuntimeException | Error e) {
+            try {
+                Files.deleteIfExists(temp);
+            } catch (IOException suppressed) {
+                e.addSuppressed(suppressed);
+            }
+            if (e instanceof IOException io) throw new IOException("cannot write " + out + ": " + describe(io), io);
+            throw e;
+        }
+    }
+
+    private static String describe(IOException e) {
+        if (e instanceof java.nio.file.AccessDeniedException) return "permission denied";
+        if (e instanceof java.nio.file.NoSuchFileException) return "the folder does not exist";
+        return e.getMessage() == null ? e.getClass().getSimpleName() : e.getMessage();
+    }
+
+    private static ImageWriter writerFor(Path out) throws IOException {
+        String name = out.getFileName() == null ? "" : out.getFileName().toString();
+        int dot = name.lastIndexOf('.');
+        String ext = dot < 0 ? "" : name.substring(dot).toLowerCase(Locale.ROOT);
+        return switch (ext) {
+            case ".png" -> PngWriter.INSTANCE;
+            case ".ppm" -> PpmWriter.INSTANCE;
+            case ".pfm" -> PfmWriter.INSTANCE;
+            default -> throw new IOException(ext.isEmpty()
+                    ? "the image file name '" + name + "' has no extension: use .png, .ppm or .pfm"
+                    : "unsupported image type '" + ext + "': use .png, .ppm or .pfm");
+        };
+    }
+
+    /** The 8-bit value of a linear channel: round(clamp(c, 0, 1)^(1/gamma)·255). */
+    public static int toByte(double c, double gamma) {
+        double v = c > 0 ? Math.min(c, 1) : 0;
+        if (gamma != 1 && v > 0 && v < 1) v = Math.pow(v, 1 / gamma);
+        return (int) Math.round(v * 255);
+    }
+
+    /** The whole image as gamma-encoded bytes, r, g, b per pixel, rows top to bottom. */
+    static byte[] encode8(FrameBuffer image, double gamma) {
+        float[] data = image.data();
+        byte[] bytes = new byte[data.length];
+        for (int i = 0; i < data.length; i++) bytes[i] = (byte) toByte(data[i], gamma);
+        return bytes;
     }
 }

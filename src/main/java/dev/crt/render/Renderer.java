@@ -2,17 +2,41 @@ package dev.crt.render;
 
 import dev.crt.image.FrameBuffer;
 import dev.crt.scene.Scene;
+import dev.crt.scene.Settings;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.atomic.AtomicBoolean;
+import java.util.concurrent.atomic.AtomicInteger;
+import java.util.concurrent.atomic.AtomicLong;
 
 /**
  * Renders a Scene as docs/rendering.md defines it. {@link #prepare} builds the acceleration
  * structures once; {@link #render} may then run any number of times.
  */
 public final class Renderer {
-    private Renderer() {}
+    /** Side of the square tiles handed out to threads. */
+    static final int TILE = 32;
+
+    private final Settings settings;
+    private final SceneGeometry geometry;
+    private final Lights lights;
+    private final BackgroundShader background;
+    private final long buildNanos;
+    private volatile RenderStats stats;
+
+    private Renderer(Scene scene) {
+        long start = System.nanoTime();
+        settings = scene.settings();
+        geometry = new SceneGeometry(scene.entities());
+        lights = new Lights(settings.lights());
+        background = new BackgroundShader(settings.background(), settings.gamma());
+        buildNanos = System.nanoTime() - start;
+        stats = new RenderStats(0, 0, 0, 0, buildNanos, 0);
+    }
 
     /** Builds what rendering {@code scene} needs (BVH and flattened primitive data). */
     public static Renderer prepare(Scene scene) {
-        throw new UnsupportedOperationException("lands with issue 3");
+        return new Renderer(scene);
     }
 
     /**
@@ -21,11 +45,94 @@ public final class Renderer {
      * @throws RenderCancelledException when the monitor cancels
      */
     public FrameBuffer render(int threads, RenderMonitor monitor) {
-        throw new UnsupportedOperationException("lands with issue 3");
+        long start = System.nanoTime();
+        int width = settings.width(), height = settings.height();
+        FrameBuffer image = new FrameBuffer(width, height);
+        CameraRays camera = new CameraRays(settings.camera(), width, height);
+        int tilesX = (width + TILE - 1) / TILE, tilesY = (height + TILE - 1) / TILE;
+        int tiles = tilesX * tilesY;
+        int workers = Math.max(1, Math.min(threads > 0 ? threads : Runtime.getRuntime().availableProcessors(), tiles));
+        AtomicInteger nextTile = new AtomicInteger();
+        AtomicLong donePixels = new AtomicLong();
+        AtomicBoolean cancelled = new AtomicBoolean();
+        long total = (long) width * height;
+        List<Tracer> tracers = new ArrayList<>();
+        List<Thread> pool = new ArrayList<>();
+        Throwable[] failure = new Throwable[1];
+        for (int w = 0; w < workers; w++) {
+            Tracer tracer = new Tracer(geometry, lights, background);
+            tracers.add(tracer);
+            PixelSampler sampler = new PixelSampler(tracer, camera, settings.supersampling(), settings.dofSamples(),
+                    settings.recursionDepth());
+            Runnable work = () -> {
+                double[] rgb = new double[3];
+                int tile;
+                while (!cancelled.get() && (tile = nextTile.getAndIncrement()) < tiles) {
+                    int x0 = (tile % tilesX) * TILE, y0 = (tile / tilesX) * TILE;
+                    int x1 = Math.min(x0 + TILE, width), y1 = Math.min(y0 + TILE, height);
+                    for (int y = y0; y < y1; y++) {
+                        if (cancelled.get() || monitor.isCancelled()) {
+                            cancelled.set(true);
+                            return;
+                        }
+                        for (int x = x0; x < x1; x++) {
+                            sampler.pixel(x, y, rgb);
+                            image.set(x, y, rgb[0], rgb[1], rgb[2]);
+                        }
+                    }
+                    monitor.progress(donePixels.addAndGet((long) (x1 - x0) * (y1 - y0)), total);
+                }
+            };
+            Thread t = new Thread(() -> {
+                try {
+                    work.run();
+                } catch (Throwable e) {
+                    cancelled.set(true);
+                    synchronized (failure) {
+                        if (failure[0] == null) failure[0] = e;
+                    }
+                }
+            }, "crt-render-" + w);
+            t.setDaemon(true);
+            pool.add(t);
+        }
+        pool.forEach(Thread::start);
+        boolean interrupted = false;
+        for (Thread t : pool) {
+            while (true) {
+                try {
+                    t.join();
+                    break;
+                } catch (InterruptedException e) {
+                    interrupted = true;
+                    cancelled.set(true);
+                }
+            }
+        }
+        long primary = 0, shadow = 0, reflected = 0, refracted = 0;
+        for (Tracer t : tracers) {
+            primary += t.primaryRays;
+            shadow += t.shadowRays;
+            reflected += t.reflectedRays;
+            refracted += t.refractedRays;
+        }
+        stats = new RenderStats(primary, shadow, reflected, refracted, buildNanos, System.nanoTime() - start);
+        if (interrupted) Thread.currentThread().interrupt();
+        if (failure[0] instanceof RuntimeException e) throw e;
+        if (failure[0] instanceof Error e) throw e;
+        if (cancelled.get()) throw new RenderCancelledException();
+        return image;
     }
 
     /** Counts and timings of the last render (and of {@link #prepare}). */
     public RenderStats stats() {
-        throw new UnsupportedOperationException("lands with issue 3");
+        return stats;
+    }
+
+    /** The shape of the prepared acceleration structure, for statistics and benchmarks. */
+    public SceneStructure structure() {
+        Bvh bvh = geometry.bvh;
+        return new SceneStructure(geometry.items.length, geometry.unbounded.length, geometry.shapes.count(),
+                bvh == null ? 0 : bvh.nodeCount, bvh == null ? 0 : bvh.depth);
     }
 }

@@ -1,0 +1,10 @@
+package dev.crt.image;
+
+import java.io.IOException;
+import java.io.OutputStream;
+import java.util.Map;
+
+/** Encodes a frame buffer in one file format. */
+interface ImageWriter {
+    void write(FrameBuffer image, double gamma, Map<String, String> text, OutputStream out) throws IOException;
+}

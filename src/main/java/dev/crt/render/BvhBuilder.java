@@ -1,0 +1,236 @@
+package dev.crt.render;
+
+import java.util.concurrent.ForkJoinPool;
+import java.util.concurrent.RecursiveTask;
+
+/**
+ * Builds a {@link Bvh} over item bounds with the binned surface area heuristic (16 bins on each
+ * axis); subtrees of more than 10,000 items are built in parallel with fork/join.
+ */
+final class BvhBuilder {
+    private static final int BINS = 16;
+    private static final int MAX_LEAF = 4;
+    private static final int PARALLEL_THRESHOLD = 10_000;
+    private static final double TRAVERSAL_COST = 1.0;
+    private static final double INTERSECTION_COST = 1.5;
+
+    private final double[] bounds;
+    private final double[] centroid;
+    /** The item order: leaves refer to ranges of it. */
+    final int[] order;
+
+    private BvhBuilder(double[] bounds, int n) {
+        this.bounds = bounds;
+        centroid = new double[3 * n];
+        order = new int[n];
+        for (int i = 0; i < n; i++) {
+            order[i] = i;
+            for (int a = 0; a < 3; a++) centroid[3 * i + a] = 0.5 * (bounds[6 * i + a] + bounds[6 * i + 3 + a]);
+        }
+    }
+
+    /** The hierarchy over {@code n} items whose boxes are {@code bounds} (six doubles each); item order in {@code orderOut}. */
+    static Bvh build(double[] bounds, int n, int[] orderOut) {
+        BvhBuilder b = new BvhBuilder(bounds, n);
+        Node root = n > PARALLEL_THRESHOLD
+                ? ForkJoinPool.commonPool().invoke(b.new Task(0, n))
+                : b.subtree(0, n);
+        System.arraycopy(b.order, 0, orderOut, 0, n);
+        int nodes = root.size;
+        double[] box = new double[6 * nodes];
+        int[] link = new int[nodes];
+        int[] count = new int[nodes];
+        int[] depth = new int[1];
+        flatten(root, 0, 1, box, link, count, depth);
+        return new Bvh(box, link, count, nodes, depth[0]);
+    }
+
+    private static int flatten(Node node, int at, int level, double[] box, int[] link, int[] count, int[] depth) {
+        System.arraycopy(node.box, 0, box, 6 * at, 6);
+        depth[0] = Math.max(depth[0], level);
+        if (node.left == null) {
+            link[at] = node.first;
+            count[at] = node.count;
+            return at + 1;
+        }
+        int right = flatten(node.left, at + 1, level + 1, box, link, count, depth);
+        link[at] = right;
+        count[at] = 0;
+        return flatten(node.right, right, level + 1, box, link, count, depth);
+    }
+
+    private static final class Node {
+        final double[] box;
+        Node left, right;
+        int first, count;
+        int size = 1;
+
+        Node(double[] box) { this.box = box; }
+    }
+
+    private final class Task extends RecursiveTask<Node> {
+        private static final long serialVersionUID = 1L;
+        private final int lo, hi;
+
+        Task(int lo, int hi) {
+            this.lo = lo;
+            this.hi = hi;
+        }
+
+        @Override
+        protected Node compute() {
+            Node node = new Node(rangeBounds(lo, hi));
+            int mid = split(node, lo, hi);
+            if (mid < 0) return node;
+            Task left = new Task(lo, mid);
+            Task right = new Task(mid, hi);
+            if (mid - lo > PARALLEL_THRESHOLD) left.fork();
+            node.right = hi - mid > PARALLEL_THRESHOLD ? right.compute() : subtree(mid, hi);
+            node.left = mid - lo > PARALLEL_THRESHOLD ? left.join() : subtree(lo, mid);
+            node.size = 1 + node.left.size + node.right.size;
+            return node;
+        }
+    }
+
+    private Node subtree(int lo, int hi) {
+        Node node = new Node(rangeBounds(lo, hi));
+        int mid = split(node, lo, hi);
+        if (mid < 0) return node;
+        node.left = subtree(lo, mid);
+        node.right = subtree(mid, hi);
+        node.size = 1 + node.left.size + node.right.size;
+        return node;
+    }
+
+    private double[] rangeBounds(int lo, int hi) {
+        double[] b = {Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY,
+                Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY};
+        for (int i = lo; i < hi; i++) {
+            int k = 6 * order[i];
+            for (int a = 0; a < 3; a++) {
+                b[a] = Math.min(b[a], bounds[k + a]);
+                b[3 + a] = Math.max(b[3 + a], bounds[k + 3 + a]);
+            }
+        }
+        return b;
+    }
+
+    /** Partitions [lo, hi) by the best SAH split and returns its middle, or makes {@code node} a leaf and returns −1. */
+    private int split(Node node, int lo, int hi) {
+        int n = hi - lo;
+        if (n <= 1) return leaf(node, lo, hi);
+        double[] cmin = {Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY};
+        double[] cmax = {Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY};
+        for (int i = lo; i < hi; i++) {
+            int k = 3 * order[i];
+            for (int a = 0; a < 3; a++) {
+                cmin[a] = Math.min(cmin[a], centroid[k + a]);
+                cmax[a] = Math.max(cmax[a], centroid[k + a]);
+            }
+        }
+        double bestCost = Double.POSITIVE_INFINITY;
+        int bestAxis = -1, bestBin = -1;
+        int[] binCount = new int[BINS];
+        double[] binBox = new double[6 * BINS];
+        double[] rightArea = new double[BINS];
+        for (int axis = 0; axis < 3; axis++) {
+            double extent = cmax[axis] - cmin[axis];
+            if (!(extent > 0)) continue;
+            java.util.Arrays.fill(binCount, 0);
+            for (int b = 0; b < BINS; b++) resetBox(binBox, b);
+            double k = BINS / extent;
+            for (int i = lo; i < hi; i++) {
+                int item = order[i];
+                int b = bin(centroid[3 * item + axis], cmin[axis], k);
+                binCount[b]++;
+                grow(binBox, b, bounds, item);
+            }
+            double[] acc = emptyBox();
+            int accCount = 0;
+            int[] rightCount = new int[BINS];
+            for (int b = BINS - 1; b > 0; b--) {
+                include(acc, binBox, b);
+                accCount += binCount[b];
+                rightArea[b] = area(acc);
+                rightCount[b] = accCount;
+            }
+            acc = emptyBox();
+            accCount = 0;
+            for (int b = 0; b < BINS - 1; b++) {
+                include(acc, binBox, b);
+                accCount += binCount[b];
+                int right = rightCount[b + 1];
+                if (accCount == 0 || right == 0) continue;
+                double cost = area(acc) * accCount + rightArea[b + 1] * right;
+                if (cost < bestCost) {
+                    bestCost = cost;
+                    bestAxis = axis;
+                    bestBin = b;
+                }
+            }
+        }
+        double parentArea = area(node.box);
+        if (bestAxis < 0) {
+            // All centroids coincide: split the range in the middle if it is too big for a leaf.
+            return n <= MAX_LEAF ? leaf(node, lo, hi) : lo + n / 2;
+        }
+        double splitCost = TRAVERSAL_COST + INTERSECTION_COST * bestCost / parentArea;
+        if (n <= MAX_LEAF && (splitCost >= INTERSECTION_COST * n || !(parentArea > 0))) return leaf(node, lo, hi);
+        double k = BINS / (cmax[bestAxis] - cmin[bestAxis]);
+        int i = lo, j = hi - 1;
+        while (i <= j) {
+            if (bin(centroid[3 * order[i] + bestAxis], cmin[bestAxis], k) <= bestBin) {
+                i++;
+            } else {
+                int x = order[i];
+                order[i] = order[j];
+                order[j] = x;
+                j--;
+            }
+        }
+        return i;
+    }
+
+    private static int bin(double c, double min, double k) {
+        int b = (int) ((c - min) * k);
+        return b < 0 ? 0 : Math.min(b, BINS - 1);
+    }
+
+    private int leaf(Node node, int lo, int hi) {
+        node.first = lo;
+        node.count = hi - lo;
+        return -1;
+    }
+
+    private static double[] emptyBox() {
+        return new double[] {Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY,
+                Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY};
+    }
+
+    private static void resetBox(double[] boxes, int b) {
+        for (int a = 0; a < 3; a++) {
+            boxes[6 * b + a] = Double.POSITIVE_INFINITY;
+            boxes[6 * b + 3 + a] = Double.NEGATIVE_INFINITY;
+        }
+    }
+
+    private static void grow(double[] boxes, int b, double[] items, int item) {
+        for (int a = 0; a < 3; a++) {
+            boxes[6 * b + a] = Math.min(boxes[6 * b + a], items[6 * item + a]);
+            boxes[6 * b + 3 + a] = Math.max(boxes[6 * b + 3 + a], items[6 * item + 3 + a]);
+        }
+    }
+
+    private static void include(double[] acc, double[] boxes, int b) {
+        for (int a = 0; a < 3; a++) {
+            acc[a] = Math.min(acc[a], boxes[6 * b + a]);
+            acc[3 + a] = Math.max(acc[3 + a], boxes[6 * b + 3 + a]);
+        }
+    }
+
+    private static double area(double[] b) {
+        double x = b[3] - b[0], y = b[4] - b[1], z = b[5] - b[2];
+        if (!(x >= 0 && y >= 0 && z >= 0)) return 0;
+        return x * y + y * z + z * x;
+    }
+}

@@ -1,0 +1,81 @@
+package dev.crt.render;
+
+import dev.crt.geom.Vec3;
+import dev.crt.scene.Camera;
+
+/**
+ * Primary rays of the camera model of rendering-model.md: forward f, right r = (0,1,0)×f, up
+ * u = f×r (rolled about f by the left-hand rule), pixel (i, j) with j = 0 at the top, and a thin
+ * lens of radius aperture/1000 focused on the plane at focaldistance along f.
+ */
+final class CameraRays {
+    final double px, py, pz;
+    final double fx, fy, fz, rx, ry, rz, ux, uy, uz;
+    final double width, height, halfHeight, aspect;
+    final double lensRadius, focalDistance;
+    final ApertureSampler aperture;
+
+    CameraRays(Camera c, int width, int height) {
+        Vec3 p = c.position();
+        Vec3 f = c.pointing().minus(p).normalize();
+        Vec3 r = Vec3.Y.cross(f);
+        r = r.length() == 0 ? Vec3.X : r.normalize();
+        Vec3 u = f.cross(r);
+        if (c.roll() != 0) {
+            double a = Math.toRadians(c.roll()), cos = Math.cos(a), sin = Math.sin(a);
+            Vec3 r2 = r.times(cos).plus(u.times(sin));
+            u = u.times(cos).minus(r.times(sin));
+            r = r2;
+        }
+        px = p.x();
+        py = p.y();
+        pz = p.z();
+        fx = f.x();
+        fy = f.y();
+        fz = f.z();
+        rx = r.x();
+        ry = r.y();
+        rz = r.z();
+        ux = u.x();
+        uy = u.y();
+        uz = u.z();
+        this.width = width;
+        this.height = height;
+        halfHeight = Math.tan(Math.toRadians(c.fov()) / 2);
+        aspect = (double) width / height;
+        lensRadius = c.aperture() / 1000;
+        focalDistance = c.focalDistance();
+        aperture = new ApertureSampler(c.apertureShape());
+    }
+
+    boolean hasLens() { return lensRadius > 0; }
+
+    /** The pinhole direction through sample (sx, sy) of pixel (i, j), written to {@code d[0..2]}. */
+    void direction(int i, int j, double sx, double sy, double[] d) {
+        double x = 2 * (i + sx) / width - 1;
+        double y = 1 - 2 * (j + sy) / height;
+        double a = x * halfHeight * aspect, b = y * halfHeight;
+        double dx = fx + a * rx + b * ux, dy = fy + a * ry + b * uy, dz = fz + a * rz + b * uz;
+        double inv = 1 / Math.sqrt(dx * dx + dy * dy + dz * dz);
+        d[0] = dx * inv;
+        d[1] = dy * inv;
+        d[2] = dz * inv;
+    }
+
+    /**
+     * Turns the pinhole direction {@code d} into the thin-lens ray through lens point (lx, ly):
+     * origin into {@code o[0..2]}, direction into {@code d[0..2]}.
+     */
+    void throughLens(double lx, double ly, double[] o, double[] d) {
+        double k = focalDistance / (d[0] * fx + d[1] * fy + d[2] * fz);
+        double fpx = px + d[0] * k, fpy = py + d[1] * k, fpz = pz + d[2] * k;
+        o[0] = px + lensRadius * (lx * rx + ly * ux);
+        o[1] = py + lensRadius * (lx * ry + ly * uy);
+        o[2] = pz + lensRadius * (lx * rz + ly * uz);
+        double dx = fpx - o[0], dy = fpy - o[1], dz = fpz - o[2];
+        double inv = 1 / Math.sqrt(dx * dx + dy * dy + dz * dz);
+        d[0] = dx * inv;
+        d[1] = dy * inv;
+        d[2] = dz * inv;
+    }
+}

@@ -1,0 +1,83 @@
+package dev.crt.render;
+
+import dev.crt.geom.Aabb;
+import dev.crt.geom.Transform;
+import dev.crt.scene.Csg;
+import dev.crt.scene.Entity;
+import dev.crt.scene.Primitive;
+import java.util.ArrayList;
+import java.util.List;
+
+/**
+ * Everything a ray can hit, prepared for tracing. Each top-level entity is one item (a whole CSG
+ * tree included): bounded items sit in a BVH (or a plain list when there are at most
+ * {@value #LINEAR_LIMIT}), unbounded ones (planes, CSG without finite bounds) in a list every ray tests.
+ * An item is a shape index, or −(tree + 1) for a CSG tree.
+ */
+final class SceneGeometry {
+    static final int LINEAR_LIMIT = 4;
+
+    final Shapes shapes = new Shapes();
+    final CsgSolids csg = new CsgSolids();
+    final Materials materials = new Materials();
+    /** Bounded items, in BVH leaf order. */
+    final int[] items;
+    final int[] unbounded;
+    /** Null when the bounded items are few enough to test them all. */
+    final Bvh bvh;
+
+    SceneGeometry(List<Entity> entities) {
+        // First pass: bounds of every entity, to build the hierarchy.
+        Shapes probeShapes = new Shapes();
+        CsgSolids probeCsg = new CsgSolids();
+        Materials probeMaterials = new Materials();
+        List<Entity> bounded = new ArrayList<>();
+        List<Entity> infinite = new ArrayList<>();
+        List<Aabb> boxes = new ArrayList<>();
+        Aabb[] out = new Aabb[1];
+        for (Entity e : entities) {
+            Aabb b;
+            if (e instanceof Primitive p) {
+                b = probeShapes.bounds(probeShapes.add(p, p.transform(), 0));
+            } else {
+                probeCsg.add((Csg) e, Transform.IDENTITY, probeShapes, q -> probeMaterials.indexOf(q.material()), out);
+                b = out[0];
+            }
+            if (b.isEmpty()) continue;
+            if (b.isFinite()) {
+                bounded.add(e);
+                boxes.add(b);
+            } else {
+                infinite.add(e);
+            }
+        }
+        int n = bounded.size();
+        int[] order = new int[n];
+        if (n > LINEAR_LIMIT) {
+            double[] flat = new double[6 * n];
+            for (int i = 0; i < n; i++) {
+                Aabb b = boxes.get(i);
+                flat[6 * i] = b.min().x();
+                flat[6 * i + 1] = b.min().y();
+                flat[6 * i + 2] = b.min().z();
+                flat[6 * i + 3] = b.max().x();
+                flat[6 * i + 4] = b.max().y();
+                flat[6 * i + 5] = b.max().z();
+            }
+            bvh = BvhBuilder.build(flat, n, order);
+        } else {
+            for (int i = 0; i < n; i++) order[i] = i;
+            bvh = null;
+        }
+        // Second pass: the flat data, laid out in traversal order for locality.
+        items = new int[n];
+        for (int i = 0; i < n; i++) items[i] = place(bounded.get(order[i]), out);
+        unbounded = new int[infinite.size()];
+        for (int i = 0; i < unbounded.length; i++) unbounded[i] = place(infinite.get(i), out);
+    }
+
+    private int place(Entity e, Aabb[] out) {
+        if (e instanceof Primitive p) return shapes.add(p, p.transform(), materials.indexOf(p.material()));
+        return -(csg.add((Csg) e, Transform.IDENTITY, shapes, q -> materials.indexOf(q.material()), out) + 1);
+    }
+}

@@ -1,0 +1,353 @@
+package dev.crt.render;
+
+/**
+ * One render thread's tracer: finds the nearest surface along a ray (BVH walk plus the unbounded
+ * items), shades it by the model of rendering-model.md and follows reflected and refracted rays.
+ * All scratch state lives here, so tracing allocates nothing; ray counts are per thread and summed
+ * when the render ends.
+ *
+ * <p>Colours are accumulated rather than returned: trace(ray, weight) adds weight × colour of the
+ * ray to the accumulator, which is exact because the colour of a ray is linear in the colours of
+ * its reflected and refracted rays.
+ */
+final class Tracer {
+    /**
+     * Secondary rays start this far (relative to the hit point's largest coordinate or the
+     * primitive's own size, whichever is larger) off the surface along its geometric normal.
+     * About 65,000 units in the last place of a double: far above the rounding error of hit
+     * points snapped onto their surface, far below any feature of the scene, and the same at
+     * every scale, so a scene moved or scaled renders the same picture.
+     */
+    static final double OFFSET = 0x1p-36;
+
+    private final SceneGeometry geometry;
+    private final Shapes shapes;
+    private final CsgSolids csg;
+    private final double[] materials;
+    private final int[] items;
+    private final int[] unbounded;
+    private final Bvh bvh;
+    private final Lights lights;
+    private final BackgroundShader background;
+
+    private final Ray ray = new Ray();
+    private final LineSpan span = new LineSpan();
+    private final Hit hit = new Hit();
+    private final SurfacePoint surface = new SurfacePoint();
+    private final CsgSolids.Scratch csgScratch;
+    private final int[] stack;
+    private final double[] stackT;
+    private final double[] colour = new double[3];
+
+    double accR, accG, accB;
+    long primaryRays, shadowRays, reflectedRays, refractedRays;
+
+    Tracer(SceneGeometry geometry, Lights lights, BackgroundShader background) {
+        this.geometry = geometry;
+        this.shapes = geometry.shapes;
+        this.csg = geometry.csg;
+        this.materials = geometry.materials.data;
+        this.items = geometry.items;
+        this.unbounded = geometry.unbounded;
+        this.bvh = geometry.bvh;
+        this.lights = lights;
+        this.background = background;
+        csgScratch = new CsgSolids.Scratch(csg.maxLeaves);
+        int depth = bvh == null ? 1 : bvh.depth + 2;
+        stack = new int[depth];
+        stackT = new double[depth];
+    }
+
+    /** Adds (wr, wg, wb) ⊙ trace(o + t·d, depth) to the accumulator. */
+    void trace(double ox, double oy, double oz, double dx, double dy, double dz, int depth,
+            double wr, double wg, double wb) {
+        if (!closestHit(ox, oy, oz, dx, dy, dz, Double.POSITIVE_INFINITY)) {
+            background.shade(dx, dy, dz, colour);
+            accR += wr * colour[0];
+            accG += wg * colour[1];
+            accB += wb * colour[2];
+            return;
+        }
+        int s = hit.shape;
+        shapes.surface(s, hit.face, hit.t, ray, surface);
+        double px = surface.px, py = surface.py, pz = surface.pz;
+        double gx = surface.nx, gy = surface.ny, gz = surface.nz;
+        if (hit.flip) {
+            gx = -gx;
+            gy = -gy;
+            gz = -gz;
+        }
+        double dn = dx * gx + dy * gy + dz * gz;
+        boolean entering = dn < 0;
+        double nx = entering ? gx : -gx, ny = entering ? gy : -gy, nz = entering ? gz : -gz;
+        double delta = OFFSET * Math.max(Math.max(Math.abs(px), Math.abs(py)), Math.max(Math.abs(pz), shapes.scale[s]));
+        int m = shapes.material[s] * Materials.STRIDE;
+        double[] mat = materials;
+        double kt = mat[m + Materials.TRANSPARENCY];
+        double kr = mat[m + Materials.REFLECTIVITY];
+        double local = 1 - kt;
+        if (local != 0) {
+            shadeLocal(m, px, py, pz, nx, ny, nz, -dx, -dy, -dz, delta);
+            accR += wr * local * colour[0];
+            accG += wg * local * colour[1];
+            accB += wb * local * colour[2];
+        }
+        if (depth == 0) return;
+        double dDotN = dx * nx + dy * ny + dz * nz;
+        double rdx = dx - 2 * dDotN * nx, rdy = dy - 2 * dDotN * ny, rdz = dz - 2 * dDotN * nz;
+        if (kr > 0) {
+            reflectedRays++;
+            trace(px + delta * nx, py + delta * ny, pz + delta * nz, rdx, rdy, rdz, depth - 1, wr * kr, wg * kr, wb * kr);
+        }
+        if (kt > 0) {
+            refractedRays++;
+            double eta = entering ? 1 / mat[m + Materials.IOR] : mat[m + Materials.IOR];
+            double cosI = -dDotN;
+            double k = 1 - eta * eta * (1 - cosI * cosI);
+            if (k < 0) {
+                trace(px + delta * nx, py + delta * ny, pz + delta * nz, rdx, rdy, rdz, depth - 1, wr * kt, wg * kt, wb * kt);
+            } else {
+                double c = eta * cosI - Math.sqrt(k);
+                trace(px - delta * nx, py - delta * ny, pz - delta * nz,
+                        eta * dx + c * nx, eta * dy + c * ny, eta * dz + c * nz, depth - 1, wr * kt, wg * kt, wb * kt);
+            }
+        }
+    }
+
+    /**
+     * E + Σℓ aℓ(Cℓ⊙C) + Sℓ·Aℓ·(kd·max(0,N·ω)(Cℓ⊙C) + ks·max(0,R·V)^n·Cℓ) into {@code colour}. A light
+     * whose diffuse and specular terms are both zero here casts no shadow ray.
+     */
+    private void shadeLocal(int m, double px, double py, double pz, double nx, double ny, double nz,
+            double vx, double vy, double vz, double delta) {
+        double[] mat = materials;
+        double cr = mat[m + Materials.R], cg = mat[m + Materials.G], cb = mat[m + Materials.B];
+        double kd = mat[m + Materials.DIFFUSE], ks = mat[m + Materials.SPECULAR];
+        double shininess = mat[m + Materials.SHININESS];
+        double r = mat[m + Materials.ER] + lights.ambientR * cr;
+        double g = mat[m + Materials.EG] + lights.ambientG * cg;
+        double b = mat[m + Materials.EB] + lights.ambientB * cb;
+        double nv = nx * vx + ny * vy + nz * vz;
+        Lights l = lights;
+        for (int i = 0; i < l.count; i++) {
+            double wx, wy, wz, dist, att;
+            if (l.parallel[i]) {
+                wx = l.x[i];
+                wy = l.y[i];
+                wz = l.z[i];
+                dist = Double.POSITIVE_INFINITY;
+                att = 1;
+            } else {
+                wx = l.x[i] - px;
+                wy = l.y[i] - py;
+                wz = l.z[i] - pz;
+                double d2 = wx * wx + wy * wy + wz * wz;
+                dist = Math.sqrt(d2);
+                wx /= dist;
+                wy /= dist;
+                wz /= dist;
+                att = l.falloff[i] > 0 ? l.falloff[i] / d2 : 1;
+            }
+            double nw = nx * wx + ny * wy + nz * wz;
+            double diffuse = nw > 0 ? kd * nw : 0;
+            double specular = 0;
+            if (ks != 0) {
+                double rv = 2 * nw * nv - (wx * vx + wy * vy + wz * vz);
+                if (rv > 0) specular = ks * Math.pow(rv, shininess);
+            }
+            if (diffuse == 0 && specular == 0) continue;
+            double side = nw > 0 ? delta : -delta;
+            double s = transmittance(px + side * nx, py + side * ny, pz + side * nz, wx, wy, wz, dist);
+            if (s == 0) continue;
+            double f = s * att;
+            r += f * (diffuse * l.r[i] * cr + specular * l.r[i]);
+            g += f * (diffuse * l.g[i] * cg + specular * l.g[i]);
+            b += f * (diffuse * l.b[i] * cb + specular * l.b[i]);
+        }
+        colour[0] = r;
+        colour[1] = g;
+        colour[2] = b;
+    }
+
+    /** The nearest surface with 0 < t < tMax into {@link #hit}; {@link #ray} keeps the ray for the surface query. */
+    boolean closestHit(double ox, double oy, double oz, double dx, double dy, double dz, double tMax) {
+        ray.set(ox, oy, oz, dx, dy, dz);
+        boolean found = false;
+        for (int item : unbounded) {
+            if (hitItem(item, tMax)) {
+                found = true;
+                tMax = hit.t;
+            }
+        }
+        if (bvh == null) {
+            for (int item : items) {
+                if (hitItem(item, tMax)) {
+                    found = true;
+                    tMax = hit.t;
+                }
+            }
+            return found;
+        }
+        int top = 0;
+        int node = 0;
+        if (entry(0, tMax) == Double.POSITIVE_INFINITY) return found;
+        int[] link = bvh.link, count = bvh.count;
+        while (true) {
+            int n = count[node];
+            if (n > 0) {
+                for (int k = link[node], end = k + n; k < end; k++) {
+                    if (hitItem(items[k], tMax)) {
+                        found = true;
+                        tMax = hit.t;
+                    }
+                }
+            } else {
+                int left = node + 1, right = link[node];
+                double tl = entry(left, tMax), tr = entry(right, tMax);
+                if (tl != Double.POSITIVE_INFINITY) {
+                    if (tr != Double.POSITIVE_INFINITY) {
+                        if (tl <= tr) {
+                            stack[top] = right;
+                            stackT[top++] = tr;
+                            node = left;
+                        } else {
+                            stack[top] = left;
+                            stackT[top++] = tl;
+                            node = right;
+                        }
+                    } else {
+                        node = left;
+                    }
+                    continue;
+                } else if (tr != Double.POSITIVE_INFINITY) {
+                    node = right;
+                    continue;
+                }
+            }
+            do {
+                if (top == 0) return found;
+                node = stack[--top];
+            } while (stackT[top] >= tMax);
+        }
+    }
+
+    /**
+     * Where the ray enters node {@code n}'s box within [0, tMax], or +∞ when it misses. A slab
+     * the ray runs exactly along gives NaN, which the comparisons ignore (conservatively a hit).
+     */
+    private double entry(int n, double tMax) {
+        double[] b = bvh.box;
+        int k = 6 * n;
+        Ray r = ray;
+        double near = 0, far = tMax;
+        double t0 = (b[k] - r.ox) * r.ix, t1 = (b[k + 3] - r.ox) * r.ix;
+        if (r.ix < 0) {
+            double x = t0;
+            t0 = t1;
+            t1 = x;
+        }
+        if (t0 > near) near = t0;
+        if (t1 < far) far = t1;
+        t0 = (b[k + 1] - r.oy) * r.iy;
+        t1 = (b[k + 4] - r.oy) * r.iy;
+        if (r.iy < 0) {
+            double x = t0;
+            t0 = t1;
+            t1 = x;
+        }
+        if (t0 > near) near = t0;
+        if (t1 < far) far = t1;
+        t0 = (b[k + 2] - r.oz) * r.iz;
+        t1 = (b[k + 5] - r.oz) * r.iz;
+        if (r.iz < 0) {
+            double x = t0;
+            t0 = t1;
+            t1 = x;
+        }
+        if (t0 > near) near = t0;
+        if (t1 < far) far = t1;
+        return near <= far ? near : Double.POSITIVE_INFINITY;
+    }
+
+    private boolean hitItem(int item, double tMax) {
+        if (item < 0) return csg.closestHit(-item - 1, ray, tMax, shapes, span, csgScratch, hit);
+        if (!shapes.span(item, ray, span)) return false;
+        double t;
+        int face;
+        if (span.tIn > 0) {
+            t = span.tIn;
+            face = span.faceIn;
+        } else if (span.tOut > 0) {
+            t = span.tOut;
+            face = span.faceOut;
+        } else {
+            return false;
+        }
+        if (!(t < tMax)) return false;
+        hit.t = t;
+        hit.shape = item;
+        hit.face = face;
+        hit.flip = false;
+        return true;
+    }
+
+    /**
+     * The shadow factor of the segment o + t·w, 0 < t < tMax: the product of kt over every surface
+     * it crosses, stopping at the first opaque one.
+     */
+    double transmittance(double ox, double oy, double oz, double wx, double wy, double wz, double tMax) {
+        shadowRays++;
+        ray.set(ox, oy, oz, wx, wy, wz);
+        double product = 1;
+        for (int item : unbounded) {
+            product *= itemTransmittance(item, tMax);
+            if (product == 0) return 0;
+        }
+        if (bvh == null) {
+            for (int item : items) {
+                product *= itemTransmittance(item, tMax);
+                if (product == 0) return 0;
+            }
+            return product;
+        }
+        if (entry(0, tMax) == Double.POSITIVE_INFINITY) return product;
+        int[] link = bvh.link, count = bvh.count;
+        int top = 0;
+        int node = 0;
+        while (true) {
+            int n = count[node];
+            if (n > 0) {
+                for (int k = link[node], end = k + n; k < end; k++) {
+                    product *= itemTransmittance(items[k], tMax);
+                    if (product == 0) return 0;
+                }
+            } else {
+                int left = node + 1, right = link[node];
+                boolean hl = entry(left, tMax) != Double.POSITIVE_INFINITY;
+                boolean hr = entry(right, tMax) != Double.POSITIVE_INFINITY;
+                if (hl) {
+                    if (hr) stack[top++] = right;
+                    node = left;
+                    continue;
+                } else if (hr) {
+                    node = right;
+                    continue;
+                }
+            }
+            if (top == 0) return product;
+            node = stack[--top];
+        }
+    }
+
+    private double itemTransmittance(int item, double tMax) {
+        if (item < 0) {
+            return csg.transmittance(-item - 1, ray, tMax, shapes, geometry.materials, span, csgScratch);
+        }
+        if (!shapes.span(item, ray, span)) return 1;
+        boolean in = span.tIn > 0 && span.tIn < tMax;
+        boolean out = span.tOut > 0 && span.tOut < tMax;
+        if (!in && !out) return 1;
+        double kt = materials[shapes.material[item] * Materials.STRIDE + Materials.TRANSPARENCY];
+        return in && out ? kt * kt : kt;
+    }
+}
