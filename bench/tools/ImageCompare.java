@@ -32,6 +32,8 @@ public final class ImageCompare {
             System.exit(1);
         }
         long sum = 0;
+        long differing = 0;
+        int max = 0;
         long over8 = 0;
         long over32 = 0;
         long pixels = (long) a.getWidth() * a.getHeight();
@@ -45,13 +47,16 @@ public final class ImageCompare {
                     sum += d;
                     worst = Math.max(worst, d);
                 }
+                max = Math.max(max, worst);
+                if (worst > 0) differing++;
                 if (worst > 8) over8++;
                 if (worst > 32) over32++;
             }
         }
         System.out.printf(Locale.ROOT,
-                "mean |difference| per channel %.2f of 255; pixels differing by more than 8: %.2f%%, by more than 32: %.2f%%%n",
-                sum / (3.0 * pixels), 100.0 * over8 / pixels, 100.0 * over32 / pixels);
+                "mean |difference| per channel %.4f of 255, largest %d; pixels that differ at all: %.3f%%,"
+                        + " by more than 8: %.3f%%, by more than 32: %.3f%%%n",
+                sum / (3.0 * pixels), max, 100.0 * differing / pixels, 100.0 * over8 / pixels, 100.0 * over32 / pixels);
     }
 
     private static BufferedImage read(String path) throws IOException {
