@@ -100,8 +100,10 @@ done
 crt_times=()
 pov_times=()
 mrays=()
-echo "run,crt_s,povray_s,crt_mrays_per_s" >"$csv"
-printf '%-5s %10s %10s %12s\n' run "CRT s" "POV-Ray s" "CRT Mrays/s"
+crt_renders=()
+pov_traces=()
+echo "run,crt_s,povray_s,crt_mrays_per_s,crt_render_s,povray_trace_s" >"$csv"
+printf '%-6s %10s %10s %12s %14s %16s\n' run "CRT s" "POV-Ray s" "CRT Mrays/s" "CRT render s" "POV-Ray trace s"
 for ((i = 1; i <= runs; i++)); do
   # alternate which one goes first, so that neither always runs right after the other
   if ((i % 2)); then
@@ -111,20 +113,27 @@ for ((i = 1; i <= runs; i++)); do
     p="$(cd "$out" && timed "$work/pov.log" "${pov_cmd[@]}")"
     c="$(timed "$work/crt.log" "${crt_cmd[@]}")"
   fi
+  # the render phase alone: CRT's --stats "render" line, POV-Ray's "Trace Time" (seconds in brackets)
   m="$(awk '/Mrays\/s/ {print $2}' "$work/crt.log" | tail -1)"
+  cr="$(awk '$1 == "render" && $3 == "s" {print $2}' "$work/crt.log" | tail -1)"
+  pt="$(grep -m1 'Trace Time' "$work/pov.log" | sed 's/.*(\([0-9.]*\) seconds).*/\1/' || true)"
   crt_times+=("$c")
   pov_times+=("$p")
   mrays+=("${m:-0}")
-  printf '%-5s %10s %10s %12s\n' "$i" "$c" "$p" "${m:-?}"
-  echo "$i,$c,$p,${m:-}" >>"$csv"
+  crt_renders+=("${cr:-0}")
+  pov_traces+=("${pt:-0}")
+  printf '%-6s %10s %10s %12s %14s %16s\n' "$i" "$c" "$p" "${m:-?}" "${cr:-?}" "${pt:-?}"
+  echo "$i,$c,$p,${m:-},${cr:-},${pt:-}" >>"$csv"
 done
 
 mc="$(median "${crt_times[@]}")"
 mp="$(median "${pov_times[@]}")"
 mm="$(median "${mrays[@]}")"
+mr="$(median "${crt_renders[@]}")"
+mt="$(median "${pov_traces[@]}")"
 ratio="$(awk -v c="$mc" -v p="$mp" 'BEGIN {printf "%.2f", c / p}')"
-printf '%-5s %10s %10s %12s\n' median "$mc" "$mp" "$mm"
-echo "median,$mc,$mp,$mm" >>"$csv"
+printf '%-6s %10s %10s %12s %14s %16s\n' median "$mc" "$mp" "$mm" "$mr" "$mt"
+echo "median,$mc,$mp,$mm,$mr,$mt" >>"$csv"
 echo
 echo "CRT last run --stats:"
 sed -n '/^rays/,$p' "$work/crt.log"
@@ -132,6 +141,7 @@ echo "POV-Ray last run:"
 grep -E 'Trace Time|Parse Time|Rays:|Shadow Ray Tests' "$work/pov.log" | sed 's/^/  /'
 echo
 echo "ratio CRT / POV-Ray (median of $runs whole-process times): $ratio"
+echo "render phase alone (CRT render / POV-Ray trace, medians): $(awk -v c="$mr" -v p="$mt" 'BEGIN {if (p > 0) printf "%.2f", c / p; else print "?"}')"
 if awk -v r="$ratio" 'BEGIN {exit !(r <= 1.0)}'; then
   echo "goal met: CRT takes at most POV-Ray's time"
 else
