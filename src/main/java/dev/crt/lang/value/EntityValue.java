@@ -7,35 +7,31 @@ import java.util.ArrayList;
 import java.util.List;
 
 /**
- * An entity with the modifiers applied to it since it was built. The modifiers are kept as a short
- * chain and folded into the entity's transform only when the entity is placed or combined: a loop
- * that moves a sphere ten million times must not build ten million pairs of matrices.
+ * An entity with the modifiers applied to it since it was built. The modifiers stay a chain of
+ * values, one per modifier, and are folded into the entity's transform only when the entity is
+ * placed or combined: a loop that moves a sphere ten million times must not build ten million
+ * pairs of matrices.
  */
-public record EntityValue(Entity base, Modifier modifiers) implements Value {
+public record EntityValue(Entity base, ModifierKind kind, Vec3 amount, EntityValue before) implements Value {
     /** The kinds of modifier a script writes inside {@code < >}. */
     public enum ModifierKind { TRANSLATE, ROTATE, SCALE }
 
-    /** One modifier, linked to the ones applied before it. */
-    public record Modifier(ModifierKind kind, Vec3 amount, Modifier before) {}
+    public static EntityValue of(Entity entity) { return new EntityValue(entity, null, null, null); }
 
-    public static EntityValue of(Entity entity) { return new EntityValue(entity, null); }
-
-    public EntityValue modified(ModifierKind kind, Vec3 amount) {
-        return new EntityValue(base, new Modifier(kind, amount, modifiers));
-    }
+    public EntityValue modified(ModifierKind k, Vec3 by) { return new EntityValue(base, k, by, this); }
 
     /** The entity with every modifier applied, in the order written, each about the world origin. */
     public Entity entity() {
-        if (modifiers == null) return base;
-        List<Modifier> inOrder = new ArrayList<>();
-        for (Modifier m = modifiers; m != null; m = m.before()) inOrder.add(m);
+        if (kind == null) return base;
+        List<EntityValue> inOrder = new ArrayList<>();
+        for (EntityValue m = this; m.kind != null; m = m.before) inOrder.add(m);
         Transform t = Transform.IDENTITY;
         for (int i = inOrder.size() - 1; i >= 0; i--) {
-            Modifier m = inOrder.get(i);
-            t = t.then(switch (m.kind()) {
-                case TRANSLATE -> Transform.translation(m.amount());
-                case ROTATE -> Transform.rotation(m.amount());
-                case SCALE -> Transform.scaling(m.amount());
+            EntityValue m = inOrder.get(i);
+            t = t.then(switch (m.kind) {
+                case TRANSLATE -> Transform.translation(m.amount);
+                case ROTATE -> Transform.rotation(m.amount);
+                case SCALE -> Transform.scaling(m.amount);
             });
         }
         return base.transformed(t);
