@@ -1,0 +1,148 @@
+import java.awt.BasicStroke;
+import java.awt.Color;
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import org.knowm.xchart.BitmapEncoder;
+import org.knowm.xchart.CategoryChart;
+import org.knowm.xchart.CategoryChartBuilder;
+import org.knowm.xchart.XYChart;
+import org.knowm.xchart.XYChartBuilder;
+import org.knowm.xchart.XYSeries;
+import org.knowm.xchart.style.Styler;
+import org.knowm.xchart.style.markers.SeriesMarkers;
+
+/**
+ * Draws the charts of docs/benchmarks.md from the CSV files that bench/povray-compare.sh and
+ * bench/scaling.sh write. Run it with bench/charts.sh, which puts XChart on the class path.
+ *
+ * <pre>
+ *   java -cp XCHART_CLASSPATH bench/charts/BenchCharts.java RESULTS_DIR IMAGES_DIR
+ * </pre>
+ * Writes bench-povray.png, bench-scaling.png and bench-mrays.png into IMAGES_DIR.
+ */
+public final class BenchCharts {
+    private static final Color CRT = new Color(0x2b, 0x6c, 0xb0);
+    private static final Color POVRAY = new Color(0xd0, 0x6b, 0x2a);
+    private static final Color GREY = new Color(0x70, 0x70, 0x70);
+
+    public static void main(String[] args) throws IOException {
+        if (args.length != 2) {
+            System.err.println("usage: BenchCharts RESULTS_DIR IMAGES_DIR");
+            System.exit(2);
+        }
+        Path results = Path.of(args[0]);
+        Path images = Path.of(args[1]);
+        Files.createDirectories(images);
+        Path compare = results.resolve("povray-compare.csv");
+        if (Files.exists(compare)) {
+            povray(read(compare), images.resolve("bench-povray.png"));
+        } else {
+            System.err.println("no " + compare + ": run bench/povray-compare.sh first");
+        }
+        Path scaling = results.resolve("scaling.csv");
+        if (Files.exists(scaling)) {
+            List<String[]> rows = read(scaling);
+            scaling(rows, images.resolve("bench-scaling.png"));
+            mrays(rows, images.resolve("bench-mrays.png"));
+        } else {
+            System.err.println("no " + scaling + ": run bench/scaling.sh first");
+        }
+    }
+
+    /** Whole-process time of each run and the median, CRT beside POV-Ray. */
+    private static void povray(List<String[]> rows, Path file) throws IOException {
+        List<String> labels = new ArrayList<>();
+        List<Double> crt = new ArrayList<>();
+        List<Double> pov = new ArrayList<>();
+        double ratio = 0;
+        for (String[] row : rows) {
+            labels.add(row[0].equals("median") ? "median" : "run " + row[0]);
+            crt.add(Double.parseDouble(row[1]));
+            pov.add(Double.parseDouble(row[2]));
+            if (row[0].equals("median")) {
+                ratio = Double.parseDouble(row[1]) / Double.parseDouble(row[2]);
+            }
+        }
+        String[] median = rows.get(rows.size() - 1);
+        if (median[0].equals("median") && median.length >= 6 && !median[4].isEmpty() && !median[5].isEmpty()) {
+            // CRT's render phase beside POV-Ray's trace phase: the tracing alone, without start-up and output
+            labels.add("render phase (median)");
+            crt.add(Double.parseDouble(median[4]));
+            pov.add(Double.parseDouble(median[5]));
+        }
+        CategoryChart chart = new CategoryChartBuilder().width(800).height(450)
+                .title(String.format(Locale.ROOT, "Box field, 1280x720: whole-process time, CRT / POV-Ray = %.2f", ratio))
+                .xAxisTitle("").yAxisTitle("seconds (lower is better)").build();
+        chart.getStyler().setLegendPosition(Styler.LegendPosition.InsideNW);
+        chart.getStyler().setSeriesColors(new Color[] {CRT, POVRAY});
+        chart.getStyler().setLabelsVisible(true);
+        chart.getStyler().setDecimalPattern("0.00");
+        chart.getStyler().setChartBackgroundColor(Color.WHITE);
+        chart.addSeries("CRT", labels, crt);
+        chart.addSeries("POV-Ray 3.7", labels, pov);
+        save(chart, file);
+    }
+
+    /** Compile, BVH build and render time against n on a logarithmic n axis. */
+    private static void scaling(List<String[]> rows, Path file) throws IOException {
+        XYChart chart = new XYChartBuilder().width(800).height(450)
+                .title("Random spheres, 640x360: time against the number of spheres")
+                .xAxisTitle("spheres (log scale)").yAxisTitle("seconds").build();
+        chart.getStyler().setXAxisLogarithmic(true);
+        chart.getStyler().setLegendPosition(Styler.LegendPosition.InsideNW);
+        chart.getStyler().setChartBackgroundColor(Color.WHITE);
+        chart.getStyler().setXAxisDecimalPattern("#,###");
+        double[] n = column(rows, 0);
+        series(chart, "render", n, column(rows, 3), CRT);
+        series(chart, "BVH build", n, column(rows, 2), POVRAY);
+        series(chart, "compile (script evaluation)", n, column(rows, 1), GREY);
+        save(chart, file);
+    }
+
+    /** Rays per second against n. */
+    private static void mrays(List<String[]> rows, Path file) throws IOException {
+        XYChart chart = new XYChartBuilder().width(800).height(450)
+                .title("Random spheres, 640x360: rays per second (primary and shadow)")
+                .xAxisTitle("spheres (log scale)").yAxisTitle("Mrays/s").build();
+        chart.getStyler().setXAxisLogarithmic(true);
+        chart.getStyler().setLegendVisible(false);
+        chart.getStyler().setChartBackgroundColor(Color.WHITE);
+        chart.getStyler().setXAxisDecimalPattern("#,###");
+        chart.getStyler().setYAxisMin(0.0);
+        series(chart, "Mrays/s", column(rows, 0), column(rows, 4), CRT);
+        save(chart, file);
+    }
+
+    private static void series(XYChart chart, String name, double[] x, double[] y, Color color) {
+        XYSeries s = chart.addSeries(name, x, y);
+        s.setMarker(SeriesMarkers.CIRCLE);
+        s.setLineColor(color);
+        s.setMarkerColor(color);
+        s.setLineStyle(new BasicStroke(2f));
+    }
+
+    private static double[] column(List<String[]> rows, int index) {
+        return rows.stream().mapToDouble(r -> Double.parseDouble(r[index])).toArray();
+    }
+
+    /** The rows of a CSV file with a header line, split on commas. */
+    private static List<String[]> read(Path file) throws IOException {
+        List<String> lines = Files.readAllLines(file);
+        List<String[]> rows = new ArrayList<>();
+        for (String line : lines.subList(1, lines.size())) {
+            if (!line.isBlank()) {
+                rows.add(line.split(",", -1));
+            }
+        }
+        return rows;
+    }
+
+    private static void save(org.knowm.xchart.internal.chartpart.Chart<?, ?> chart, Path file) throws IOException {
+        BitmapEncoder.saveBitmap(chart, file.toString(), BitmapEncoder.BitmapFormat.PNG);
+        System.out.println("wrote " + file);
+    }
+}

@@ -1,0 +1,173 @@
+#!/usr/bin/env bash
+# Renders the benchmark scene with CRT and with POV-Ray 3.7, alternating, and prints the ratio of
+# the medians of the whole-process wall-clock times (CRT / POV-Ray; below 1.0 means CRT is faster).
+#
+#   bench/povray-compare.sh [--runs N] [--warmup N] [--width W --height H] [--out DIR]
+#
+# Scenes: scenes/box-field.crt and its hand-written twin bench/povray/box-field.pov.
+# Both use every core (CRT's default; POV-Ray +WT<cores>), one sample per pixel, PNG output.
+# POV-Ray is installed from Debian (package povray) when missing and this runs as root.
+# Results: a table on stdout (wall-clock and CPU seconds of each run, the render phase alone, CRT
+# Mrays/s), and DIR/povray-compare.csv (default DIR: bench/results). GNU time measures each run.
+set -euo pipefail
+
+here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
+root="$(cd "$here/.." && pwd)"
+runs=3
+warmup=1
+width=1280
+height=720
+out="$here/results"
+
+usage() { sed -n '2,11p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'; }
+while [ $# -gt 0 ]; do
+  case "$1" in
+    --runs) runs="$2"; shift 2 ;;
+    --warmup) warmup="$2"; shift 2 ;;
+    --width) width="$2"; shift 2 ;;
+    --height) height="$2"; shift 2 ;;
+    --out) out="$2"; shift 2 ;;
+    -h|--help) usage; exit 0 ;;
+    *) echo "povray-compare: unknown option '$1'" >&2; usage >&2; exit 2 ;;
+  esac
+done
+
+crt_scene="$root/scenes/box-field.crt"
+pov_scene="$here/povray/box-field.pov"
+cores="$(nproc)"
+
+# --- POV-Ray 3.7 --------------------------------------------------------------------------------
+if [ ! -x /usr/bin/time ]; then
+  if [ "$(id -u)" = 0 ] && command -v apt-get >/dev/null 2>&1; then
+    echo "povray-compare: installing GNU time (Debian package time)..." >&2
+    DEBIAN_FRONTEND=noninteractive apt-get install -y -q time >&2 || { apt-get update -q >&2 && DEBIAN_FRONTEND=noninteractive apt-get install -y -q time >&2; }
+  else
+    echo "povray-compare: GNU time is needed (/usr/bin/time): sudo apt-get install time" >&2
+    exit 3
+  fi
+fi
+if ! command -v povray >/dev/null 2>&1; then
+  if [ "$(id -u)" = 0 ] && command -v apt-get >/dev/null 2>&1; then
+    echo "povray-compare: installing POV-Ray (Debian package povray)..." >&2
+    export DEBIAN_FRONTEND=noninteractive
+    apt-get update -q >&2
+    apt-get install -y -q povray >&2
+  else
+    echo "povray-compare: POV-Ray is not installed; install it with: sudo apt-get install povray" >&2
+    exit 3
+  fi
+fi
+pov_version="$(povray --version 2>&1 | grep -m1 '^POV-Ray' || echo 'POV-Ray (unknown version)')"
+
+# --- CRT ----------------------------------------------------------------------------------------
+# Build once before timing anything (the launcher builds target/crt.jar when sources changed).
+"$root/crt" --version >/dev/null
+
+mkdir -p "$out"
+out="$(cd "$out" && pwd)"
+csv="$out/povray-compare.csv"
+work="$(mktemp -d)"
+trap 'rm -rf "$work"' EXIT
+
+crt_cmd=("$root/crt" render "$crt_scene" -o "$out/box-field-crt.png" --width "$width" --height "$height" --stats)
+# -D no display, -A no antialiasing (NB: +A0 would turn antialiasing ON with threshold 0),
+# +WT work threads, +FN PNG, File_Gamma=1.0 to write colours as computed like CRT's gamma 1.
+pov_cmd=(povray -D -A "+WT$cores" "+W$width" "+H$height" +FN File_Gamma=1.0 "+I$pov_scene" "+O$out/box-field-povray.png")
+
+# Runs a command; prints its whole-process wall-clock time and its CPU time (user + system, all
+# threads), in seconds, separated by a space. The command's own output goes to the log file $1.
+timed() {
+  local log="$1"; shift
+  local tf
+  tf="$(mktemp)"
+  if ! /usr/bin/time -o "$tf" -f '%e %U %S' "$@" >"$log" 2>&1; then
+    echo "povray-compare: command failed: $*" >&2
+    tail -20 "$log" >&2
+    rm -f "$tf"
+    exit 1
+  fi
+  awk '{printf "%.2f %.2f", $1, $2 + $3}' "$tf"
+  rm -f "$tf"
+}
+
+median() { printf '%s\n' "$@" | sort -g | awk '{a[NR]=$1} END {print (NR % 2) ? a[(NR+1)/2] : (a[NR/2] + a[NR/2+1]) / 2}'; }
+
+echo "machine: $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2- | sed 's/^ //'), $cores cores, $(awk '/MemTotal/ {printf "%.0f GiB", $2/1048576}' /proc/meminfo)"
+echo "java:    $(java -version 2>&1 | head -1)"
+echo "povray:  $pov_version"
+echo "scene:   box-field, ${width}x${height}, 1 sample per pixel, recursion depth 5 (POV-Ray max_trace_level 6)"
+echo "load:    $(cut -d' ' -f1-3 /proc/loadavg) (1, 5, 15 min) before the runs"
+echo "CRT:     ${crt_cmd[*]}"
+echo "POV-Ray: (cd $out &&) ${pov_cmd[*]}"
+echo
+
+for ((i = 1; i <= warmup; i++)); do
+  echo "warm-up $i (not counted)..."
+  timed "$work/crt.log" "${crt_cmd[@]}" >/dev/null
+  (cd "$out" && timed "$work/pov.log" "${pov_cmd[@]}") >/dev/null
+done
+
+crt_times=()
+pov_times=()
+mrays=()
+crt_renders=()
+pov_traces=()
+crt_cpus=()
+pov_cpus=()
+echo "run,crt_s,povray_s,crt_mrays_per_s,crt_render_s,povray_trace_s,crt_cpu_s,povray_cpu_s" >"$csv"
+echo "wall: whole-process wall-clock seconds; cpu: user + system seconds of all its threads;"
+echo "render/trace: the render phase alone, from CRT's --stats and POV-Ray's Trace Time"
+printf '%-6s %8s %8s %8s %8s %9s %8s %10s\n' run "CRT" "POV-Ray" "CRT cpu" "POV cpu" "CRT rndr" "POV trc" "CRT Mray/s"
+for ((i = 1; i <= runs; i++)); do
+  # alternate which one goes first, so that neither always runs right after the other
+  if ((i % 2)); then
+    read -r c ccpu <<<"$(timed "$work/crt.log" "${crt_cmd[@]}")"
+    read -r p pcpu <<<"$(cd "$out" && timed "$work/pov.log" "${pov_cmd[@]}")"
+  else
+    read -r p pcpu <<<"$(cd "$out" && timed "$work/pov.log" "${pov_cmd[@]}")"
+    read -r c ccpu <<<"$(timed "$work/crt.log" "${crt_cmd[@]}")"
+  fi
+  # the render phase alone: CRT's --stats "render" line, POV-Ray's "Trace Time" (seconds in brackets)
+  m="$(awk '/Mrays\/s/ {print $2}' "$work/crt.log" | tail -1)"
+  cr="$(awk '$1 == "render" && $3 == "s" {print $2}' "$work/crt.log" | tail -1)"
+  pt="$(grep -m1 'Trace Time' "$work/pov.log" | sed 's/.*(\([0-9.]*\) seconds).*/\1/' || true)"
+  crt_times+=("$c")
+  pov_times+=("$p")
+  mrays+=("${m:-0}")
+  crt_renders+=("${cr:-0}")
+  pov_traces+=("${pt:-0}")
+  crt_cpus+=("$ccpu")
+  pov_cpus+=("$pcpu")
+  printf '%-6s %8s %8s %8s %8s %9s %8s %10s\n' "$i" "$c" "$p" "$ccpu" "$pcpu" "${cr:-?}" "${pt:-?}" "${m:-?}"
+  echo "$i,$c,$p,${m:-},${cr:-},${pt:-},$ccpu,$pcpu" >>"$csv"
+done
+
+mc="$(median "${crt_times[@]}")"
+mp="$(median "${pov_times[@]}")"
+mm="$(median "${mrays[@]}")"
+mr="$(median "${crt_renders[@]}")"
+mt="$(median "${pov_traces[@]}")"
+mcc="$(median "${crt_cpus[@]}")"
+mpc="$(median "${pov_cpus[@]}")"
+ratio="$(awk -v c="$mc" -v p="$mp" 'BEGIN {printf "%.2f", c / p}')"
+printf '%-6s %8s %8s %8s %8s %9s %8s %10s\n' median "$mc" "$mp" "$mcc" "$mpc" "$mr" "$mt" "$mm"
+echo "median,$mc,$mp,$mm,$mr,$mt,$mcc,$mpc" >>"$csv"
+echo
+echo "CRT last run --stats:"
+sed -n '/^rays/,$p' "$work/crt.log"
+echo "POV-Ray last run:"
+grep -E 'Trace Time|Parse Time|Rays:|Shadow Ray Tests' "$work/pov.log" | sed 's/^/  /'
+echo
+echo "ratio CRT / POV-Ray (median of $runs whole-process times): $ratio"
+echo "CPU time (CRT / POV-Ray, medians; less sensitive to other load): $(awk -v c="$mcc" -v p="$mpc" 'BEGIN {printf "%.2f", c / p}')"
+echo "render phase alone (CRT render / POV-Ray trace, medians): $(awk -v c="$mr" -v p="$mt" 'BEGIN {if (p > 0) printf "%.2f", c / p; else print "?"}')"
+if awk -v r="$ratio" 'BEGIN {exit !(r <= 1.0)}'; then
+  echo "goal met: CRT takes at most POV-Ray's time"
+else
+  echo "goal NOT met: CRT takes longer than POV-Ray"
+fi
+echo "images: $out/box-field-crt.png and $out/box-field-povray.png"
+if [ -f "$out/box-field-crt.png" ] && [ -f "$out/box-field-povray.png" ]; then
+  echo "difference: $(java "$here/tools/ImageCompare.java" "$out/box-field-crt.png" "$out/box-field-povray.png" 2>&1)"
+fi
+echo "load:    $(cut -d' ' -f1-3 /proc/loadavg) (1, 5, 15 min) after the runs"
