@@ -191,6 +191,24 @@ class DiagnosticsTest {
     }
 
     @Test
+    void listsCannotGrowWithoutBound() {
+        at(error("xs = [1]\nwhile (true) { xs = xs + xs }\n"), 2, 21, "a list of 16,777,216 items is too long (at most 10,000,000)");
+    }
+
+    @Test
+    void interruptingTheCallerCancelsTheCompile() throws InterruptedException {
+        java.util.concurrent.atomic.AtomicReference<CompileResult> result = new java.util.concurrent.atomic.AtomicReference<>();
+        Thread caller = new Thread(() -> result.set(CrtCompiler.compile(Source.of("spin.crt", "while (true) { }\n"),
+                new CompileOptions(0, List.of(), Long.MAX_VALUE, Duration.ofSeconds(60)))));
+        caller.start();
+        Thread.sleep(300);
+        caller.interrupt();
+        caller.join(10_000);
+        assertThat(caller.isAlive()).isFalse();
+        at(result.get().diagnostics().get(0), 1, 1, "evaluation stopped: the compile was cancelled");
+    }
+
+    @Test
     void scaleWithAZeroComponent() {
         at(error("s = Sphere { }\nt2 = s <scale vec3(1, 0, 1)>\n"), 2, 9,
                 "scale with a zero component (vec3(1, 0, 1)) would flatten the entity");

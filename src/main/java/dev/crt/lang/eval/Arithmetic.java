@@ -13,6 +13,9 @@ import java.util.function.Supplier;
 
 /** The arithmetic operators on numbers, vectors, colours and lists (CSG is the evaluator's). */
 final class Arithmetic {
+    // Doubling a list in a loop would exhaust the heap long before the loop budget stops it.
+    static final int MAX_LIST_SIZE = 10_000_000;
+
     private Arithmetic() {}
 
     static Value multiplicative(String op, Value a, Value b, Supplier<SourceSpan> where, Evaluator ev) {
@@ -59,6 +62,10 @@ final class Arithmetic {
                 return color(plus ? c.color().plus(d.color()) : c.color().minus(d.color()), where, ev);
             }
             if (plus && a instanceof ListValue xs && b instanceof ListValue ys) {
+                long size = (long) xs.items().size() + ys.items().size();
+                if (size > MAX_LIST_SIZE) {
+                    throw ev.error(String.format("a list of %,d items is too long (at most %,d)", size, MAX_LIST_SIZE), where.get());
+                }
                 List<Value> all = new ArrayList<>(xs.items().size() + ys.items().size());
                 all.addAll(xs.items());
                 all.addAll(ys.items());
