@@ -92,7 +92,7 @@ class CompilerFuzzTest {
         s.append(String.join(" ", words));
     }
 
-    @Property(tries = 2500)
+    @Property(tries = 2000)
     void compilingAnythingGivesASceneOrErrors(@ForAll("mangledScripts") String script) throws Exception {
         CompileResult r = CompletableFuture.supplyAsync(() -> CrtCompiler.compile(Source.of("fuzz.crt", script), OPTIONS))
                 .get(30, TimeUnit.SECONDS);

@@ -1,5 +1,6 @@
 package dev.crt.lang.eval;
 
+import dev.crt.geom.Transform;
 import dev.crt.geom.Vec3;
 import dev.crt.lang.CompileOptions;
 import dev.crt.lang.Diagnostic;
@@ -21,11 +22,13 @@ import dev.crt.scene.CsgOperation;
 import dev.crt.scene.Entity;
 import dev.crt.scene.Scene;
 import dev.crt.scene.SourceSpan;
-import dev.crt.geom.Transform;
 import java.nio.file.Path;
+import java.util.ArrayDeque;
 import java.util.ArrayList;
+import java.util.Comparator;
 import java.util.HashMap;
 import java.util.HashSet;
+import java.util.IdentityHashMap;
 import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Map;
@@ -62,7 +65,7 @@ public final class Evaluator extends CRTBaseVisitor<Value> {
     private Map<String, Value> locals;
     private final List<Frame> callStack = new ArrayList<>();
     private final List<EntityValue> placed = new ArrayList<>();
-    private final Map<ParseTree, Code> compiled = new java.util.IdentityHashMap<>();
+    private final Map<ParseTree, Code> compiled = new IdentityHashMap<>();
     private Set<String> assignedNames = Set.of();
     private int loopDepth;
     private boolean sawScene;
@@ -105,7 +108,7 @@ public final class Evaluator extends CRTBaseVisitor<Value> {
     /** Every diagnostic so far, in source order. */
     public List<Diagnostic> diagnostics() {
         List<Diagnostic> sorted = new ArrayList<>(diagnostics);
-        sorted.sort(java.util.Comparator.comparingInt(d -> d.span().start()));
+        sorted.sort(Comparator.comparingInt(d -> d.span().start()));
         return sorted;
     }
 
@@ -354,7 +357,7 @@ public final class Evaluator extends CRTBaseVisitor<Value> {
     /** Every name the script assigns or binds as a macro parameter (walked without recursion: trees may be deep). */
     private static Set<String> assignedNames(ParseTree root) {
         Set<String> names = new HashSet<>();
-        java.util.ArrayDeque<ParseTree> pending = new java.util.ArrayDeque<>();
+        ArrayDeque<ParseTree> pending = new ArrayDeque<>();
         pending.push(root);
         while (!pending.isEmpty()) {
             ParseTree t = pending.pop();
@@ -846,6 +849,4 @@ public final class Evaluator extends CRTBaseVisitor<Value> {
     }
 
     static String describe(Value v) { return v.typeName(); }
-
-    Random random() { return random; }
 }

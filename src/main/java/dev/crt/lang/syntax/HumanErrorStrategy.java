@@ -10,7 +10,6 @@ import org.antlr.v4.runtime.InputMismatchException;
 import org.antlr.v4.runtime.NoViableAltException;
 import org.antlr.v4.runtime.Parser;
 import org.antlr.v4.runtime.ParserRuleContext;
-import org.antlr.v4.runtime.RecognitionException;
 import org.antlr.v4.runtime.Token;
 import org.antlr.v4.runtime.misc.IntervalSet;
 
@@ -63,12 +62,6 @@ final class HumanErrorStrategy extends DefaultErrorStrategy {
     @Override
     protected void reportFailedPredicate(Parser parser, org.antlr.v4.runtime.FailedPredicateException e) {
         parser.notifyErrorListeners(e.getOffendingToken(), "unexpected " + describe(e.getOffendingToken()), e);
-    }
-
-    @Override
-    public void reportError(Parser parser, RecognitionException e) {
-        if (inErrorRecoveryMode(parser)) return;
-        super.reportError(parser, e);
     }
 
     private String unexpected(Parser parser, Token token, IntervalSet expected) {
