@@ -95,6 +95,12 @@ class DiagnosticsTest {
     }
 
     @Test
+    void unknownFunctionSuggestsTheClosest() {
+        at(error("x = sqr(4)\n"), 1, 5, "unknown function or macro 'sqr' (did you mean 'sqrt'?)");
+        at(error("spheres = Macro () { }\nScene { sphere() }\n"), 2, 9, "unknown function or macro 'sphere' (did you mean 'spheres'?)");
+    }
+
+    @Test
     void assigningTimeIsAnError() {
         at(error("t = 3\n"), 1, 1, "cannot assign to 't': it is the animation time, set from the command line");
     }

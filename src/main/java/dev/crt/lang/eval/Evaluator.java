@@ -531,7 +531,12 @@ public final class Evaluator extends CRTBaseVisitor<Value> {
                 && atom.getChild(0) instanceof CRTParser.VariableContext variable) {
             String name = name(variable);
             Value bound = lookupOrNull(name);
-            if (bound == null && !isAssigned(name) && Builtins.exists(name)) return callBuiltin(name, ctx);
+            if (bound == null && !isAssigned(name)) {
+                if (Builtins.exists(name)) return callBuiltin(name, ctx);
+                Set<String> known = new LinkedHashSet<>(Builtins.names());
+                known.addAll(visibleNames());
+                throw error("unknown function or macro '" + name + "'" + Spelling.suggestion(name, known), span(variable));
+            }
             return callMacro(name, visit(variable), ctx);
         }
         return callMacro(null, visit(ctx.getChild(0)), ctx);
@@ -744,9 +749,13 @@ public final class Evaluator extends CRTBaseVisitor<Value> {
         if (Builtins.exists(name)) {
             throw error("'" + name + "' is a function: call it as " + Builtins.signature(name), span(ctx));
         }
-        Set<String> known = new LinkedHashSet<>(globals.keySet());
-        if (locals != null) known.addAll(locals.keySet());
-        throw error("variable '" + name + "' is not assigned" + Spelling.suggestion(name, known), span(ctx));
+        throw error("variable '" + name + "' is not assigned" + Spelling.suggestion(name, visibleNames()), span(ctx));
+    }
+
+    private Set<String> visibleNames() {
+        Set<String> names = new LinkedHashSet<>(globals.keySet());
+        if (locals != null) names.addAll(locals.keySet());
+        return names;
     }
 
     private String name(CRTParser.VariableContext ctx) {
