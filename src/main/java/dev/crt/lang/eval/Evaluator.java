@@ -483,7 +483,7 @@ public final class Evaluator extends CRTBaseVisitor<Value> {
     }
 
     private Value multiply(CRTParser.MultiplicativeContext ctx, Value a, Value b) {
-        return Arithmetic.multiplicative(ctx.op.getText(), a, b, () -> span(ctx), this);
+        return Arithmetic.multiplicative(ctx.op.getText(), a, b, ctx, this);
     }
 
     @Override
@@ -501,7 +501,7 @@ public final class Evaluator extends CRTBaseVisitor<Value> {
             };
             return EntityValue.of(new Csg(operation, x.entity(), y.entity(), Transform.IDENTITY, span(ctx)));
         }
-        return Arithmetic.additive(op, a, b, () -> span(ctx), this);
+        return Arithmetic.additive(op, a, b, ctx, this);
     }
 
     @Override
