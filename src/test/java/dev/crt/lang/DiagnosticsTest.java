@@ -215,6 +215,24 @@ class DiagnosticsTest {
     }
 
     @Test
+    void anEndlessTimeBudgetIsAccepted() {
+        CompileResult r = CrtCompiler.compile(Source.of("x.crt", "while (true) { }\n"),
+                new CompileOptions(0, List.of(), 5000, Duration.ofSeconds(Long.MAX_VALUE)));
+        assertThat(r.diagnostics().get(0).message()).startsWith("evaluation stopped: loops ran 5,000 iterations");
+    }
+
+    @Test
+    void settingsAttributesNeedTheRightKinds() {
+        at(error("Settings { lights -> [PointLight { origin -> vec3(0,0,0) }, 3] }\n"), 1, 12,
+                "attribute 'lights' of Settings expects a list of lights, but item 1 is a number");
+        at(error("Settings { camera -> Sphere { } }\n"), 1, 12, "attribute 'camera' of Settings expects a camera, got entity");
+        at(error("Settings { title -> 3 }\n"), 1, 12, "attribute 'title' of Settings expects a string, got number");
+        at(error("Settings { colour -> 3 }\n"), 1, 12, "unknown attribute 'colour' for Settings");
+        at(error("c = Camera { position -> vec3(1,1,1) pointing -> vec3(1,1,1) }\n"), 1, 38,
+                "the camera's pointing must differ from its position");
+    }
+
+    @Test
     void scaleWithAZeroComponent() {
         at(error("s = Sphere { }\nt2 = s <scale vec3(1, 0, 1)>\n"), 2, 9,
                 "scale with a zero component (vec3(1, 0, 1)) would flatten the entity");
