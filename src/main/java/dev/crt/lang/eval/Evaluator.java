@@ -23,12 +23,12 @@ import dev.crt.scene.Entity;
 import dev.crt.scene.Scene;
 import dev.crt.scene.SourceSpan;
 import java.nio.file.Path;
-import java.util.ArrayDeque;
 import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.HashMap;
 import java.util.HashSet;
 import java.util.IdentityHashMap;
+import java.util.Iterator;
 import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Map;
@@ -83,13 +83,14 @@ public final class Evaluator extends CRTBaseVisitor<Value> {
     /** Asks a running evaluation to stop soon (another thread may call it). */
     public void cancel() { budget.cancel(); }
 
-    /** Runs the script; the scene is null when there were errors. Diagnostics are in source order. */
-    public Scene run(CRTParser.ScriptContext script, String sourceName) {
-        assignedNames = assignedNames(script);
+    /**
+     * Runs the script's top-level statements in order; {@code assignedNames} are the names it ever
+     * assigns or binds. The scene is null when there were errors. Diagnostics are in source order.
+     */
+    public Scene run(Iterator<CRTParser.StatementContext> statements, Set<String> assignedNames, String sourceName) {
+        this.assignedNames = assignedNames;
         try {
-            for (CRTParser.StatementContext statement : script.statement()) {
-                runRecovering(statement, Place.TOP, null);
-            }
+            while (statements.hasNext()) runRecovering(statements.next(), Place.TOP, null);
         } catch (EvaluationStopped stop) {
             record(Severity.ERROR, stop.getMessage(), stop.span(), stop.callChain());
             errors++;
@@ -352,24 +353,6 @@ public final class Evaluator extends CRTBaseVisitor<Value> {
             }
         }
         return () -> visit(c);
-    }
-
-    /** Every name the script assigns or binds as a macro parameter (walked without recursion: trees may be deep). */
-    private static Set<String> assignedNames(ParseTree root) {
-        Set<String> names = new HashSet<>();
-        ArrayDeque<ParseTree> pending = new ArrayDeque<>();
-        pending.push(root);
-        while (!pending.isEmpty()) {
-            ParseTree t = pending.pop();
-            if (t instanceof CRTParser.AssignmentContext a) names.add(a.IDENT().getText());
-            if (t instanceof CRTParser.MacroContext m) {
-                for (TerminalNode p : m.IDENT()) names.add(p.getText());
-            }
-            for (int i = 0; i < t.getChildCount(); i++) {
-                if (t.getChild(i) instanceof ParserRuleContext child) pending.push(child);
-            }
-        }
-        return names;
     }
 
     // ---- expressions ---------------------------------------------------------------------------
