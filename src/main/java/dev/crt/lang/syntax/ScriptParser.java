@@ -72,9 +72,11 @@ public final class ScriptParser {
         parser.setBuildParseTree(false);
         parser.getInterpreter().setPredictionMode(PredictionMode.SLL);
         parser.setErrorHandler(new BailErrorStrategy());
+        PredictionMode enough = PredictionMode.SLL;
         try {
             parser.script();
         } catch (ParseCancellationException sllFailed) {
+            enough = PredictionMode.LL;
             tokens.seek(0);
             parser.reset();
             parser.setBuildParseTree(true);
@@ -83,20 +85,21 @@ public final class ScriptParser {
             parser.addErrorListener(errors);
             try {
                 parser.script();
-            } catch (SyntaxErrors.TooManyErrors enough) {
+            } catch (SyntaxErrors.TooManyErrors tooMany) {
                 // The first errors are all anyone reads.
             }
         }
         List<Diagnostic> found = errors.diagnostics();
         if (!found.isEmpty()) return new Parsed(null, limit(found), assigned);
-        return new Parsed(new Statements(chars), List.of(), assigned);
+        return new Parsed(new Statements(chars, enough), List.of(), assigned);
     }
 
     /** The statements of a script known to be free of syntax errors, parsed as they are asked for. */
     private static final class Statements implements Iterator<CRTParser.StatementContext> {
         private final CRTParser parser;
 
-        Statements(CharStream chars) {
+        /** {@code mode} is the prediction that sufficed for the whole script in the check. */
+        Statements(CharStream chars, PredictionMode mode) {
             chars.seek(0);
             CRTLexer lexer = new CRTLexer(chars);
             lexer.removeErrorListeners();
@@ -105,7 +108,7 @@ public final class ScriptParser {
             parser = new CRTParser(new UnbufferedTokenStream<>(lexer));
             parser.removeErrorListeners();
             parser.setTrimParseTree(true);
-            parser.getInterpreter().setPredictionMode(PredictionMode.LL);
+            parser.getInterpreter().setPredictionMode(mode);
             parser.setErrorHandler(new BailErrorStrategy());
         }
 
