@@ -6,6 +6,7 @@ import dev.crt.scene.SourceSpan;
 import java.util.ArrayList;
 import java.util.List;
 import org.antlr.v4.runtime.DefaultErrorStrategy;
+import org.antlr.v4.runtime.FailedPredicateException;
 import org.antlr.v4.runtime.InputMismatchException;
 import org.antlr.v4.runtime.NoViableAltException;
 import org.antlr.v4.runtime.Parser;
@@ -60,7 +61,7 @@ final class HumanErrorStrategy extends DefaultErrorStrategy {
     }
 
     @Override
-    protected void reportFailedPredicate(Parser parser, org.antlr.v4.runtime.FailedPredicateException e) {
+    protected void reportFailedPredicate(Parser parser, FailedPredicateException e) {
         parser.notifyErrorListeners(e.getOffendingToken(), "unexpected " + describe(e.getOffendingToken()), e);
     }
 
@@ -76,7 +77,7 @@ final class HumanErrorStrategy extends DefaultErrorStrategy {
         return message;
     }
 
-    /** At the end of the file: what the innermost construct still open needs to be closed. */
+    /** "expected ')' to close '(' opened at 1:5" for the innermost construct still open, or null. */
     private String unclosed(ParserRuleContext ctx) {
         for (ParserRuleContext c = ctx; c != null; c = c.getParent()) {
             String closer = null;
