@@ -22,7 +22,7 @@ import java.util.SplittableRandom;
  * boxes, three CSG bowls, a few spheres, three point lights and a parallel light, depth 5,
  * 1280×720, one sample per pixel) on 2 threads, then n = 1,000 … 1,000,000 small random spheres to
  * show render time growing like log n. Run:
- * <pre>mvn -B -q -o test-compile && java -cp target/classes:target/test-classes dev.crt.render.RenderBench [threads] [maxSpheres]</pre>
+ * <pre>mvn -B -q -o test-compile && java -cp target/classes:target/test-classes dev.crt.render.RenderBench [all|boxes|spheres] [threads] [maxSpheres]</pre>
  * or, for one cold render in a fresh process (the figure to compare with POV-Ray's whole run),
  * {@code time java -cp target/classes:target/test-classes dev.crt.render.RenderBench once}.
  */
@@ -67,7 +67,7 @@ public final class RenderBench {
     static Scene spheres(int n, int width, int height) {
         SplittableRandom r = new SplittableRandom(n);
         List<Entity> es = new ArrayList<>(n);
-        double radius = 2.0 / Math.cbrt(n);
+        double radius = 3.0 / Math.cbrt(n);
         for (int i = 0; i < n; i++) {
             Material m = matte(rgb(0.2 + 0.8 * r.nextDouble(), 0.2 + 0.8 * r.nextDouble(), 0.5));
             es.add(sphere(v(r.nextDouble() * 20 - 10, r.nextDouble() * 20 - 10, r.nextDouble() * 20), radius * (0.5 + r.nextDouble()), m));
@@ -110,12 +110,17 @@ public final class RenderBench {
             System.out.printf("cold render %.1f ms, %.2f Mrays/s%n", r.stats().renderNanos() / 1e6, r.stats().megaRaysPerSecond());
             return;
         }
-        int threads = args.length > 0 ? Integer.parseInt(args[0]) : 2;
-        int maxSpheres = args.length > 1 ? Integer.parseInt(args[1]) : 1_000_000;
+        String what = args.length > 0 ? args[0] : "all";
+        int threads = args.length > 1 ? Integer.parseInt(args[1]) : 2;
+        int maxSpheres = args.length > 2 ? Integer.parseInt(args[2]) : 1_000_000;
         long start = System.nanoTime();
-        run("boxes 1280x720 warm-up", boxes(1280, 720), threads, 1);
-        run("boxes 1280x720", boxes(1280, 720), threads, 3);
-        for (int n = 1000; n <= maxSpheres; n *= 10) run("spheres " + n, spheres(n, 640, 480), threads, 2);
+        if (!what.equals("spheres")) {
+            run("boxes 1280x720 cold", boxes(1280, 720), threads, 1);
+            run("boxes 1280x720 warm", boxes(1280, 720), threads, 3);
+        }
+        if (!what.equals("boxes")) {
+            for (int n = 1000; n <= maxSpheres; n *= 10) run("spheres " + n, spheres(n, 640, 480), threads, 2);
+        }
         System.out.printf("total %.1f s%n", (System.nanoTime() - start) / 1e9);
     }
 }
