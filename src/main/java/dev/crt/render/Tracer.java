@@ -283,7 +283,7 @@ final class Tracer {
     }
 
     private boolean hitItem(int item, double tMax) {
-        if (item < 0) return csg.closestHit(-item - 1, ray, tMax, shapes, span, csgScratch, hit);
+        if (item < 0) return csg.closestHit(-item - 1, ray, tMax, shapes, geometry.materials, span, csgScratch, hit);
         if (!shapes.span(item, ray, span)) return false;
         double t;
         int face;
