@@ -16,6 +16,8 @@ import java.util.concurrent.atomic.AtomicLong;
 public final class Renderer {
     /** Side of the square tiles handed out to threads. */
     static final int TILE = 32;
+    /** Room for deep recursion (mirrors facing each other at a large recursiondepth); only reserved, not used. */
+    private static final long RENDER_STACK = 256L << 20;
 
     private final Settings settings;
     private final SceneGeometry geometry;
@@ -85,7 +87,7 @@ public final class Renderer {
                     monitor.progress(donePixels.addAndGet((long) (x1 - x0) * (y1 - y0)), total);
                 }
             };
-            Thread t = new Thread(() -> {
+            Thread t = new Thread(null, () -> {
                 try {
                     work.run();
                 } catch (Throwable e) {
@@ -94,7 +96,7 @@ public final class Renderer {
                         if (failure[0] == null) failure[0] = e;
                     }
                 }
-            }, "crt-render-" + w);
+            }, "crt-render-" + w, RENDER_STACK);
             t.setDaemon(true);
             pool.add(t);
         }
