@@ -113,11 +113,15 @@ final class AnimateCommand implements Callable<Integer> {
         AnimationRun run = new AnimationRun(source, options, renderOptions::applyTo, jobs, Math.max(1, threads / jobs),
                 keepGoing, err);
         AnimationRun.Outcome outcome;
-        try (Cancellation cancel = Cancellation.install();
-             AnimationProgress progress = AnimationProgress.start(todo.size(), renderOptions.quiet, err)) {
-            outcome = run.run(todo, cancel, progress);
+        int exit;
+        // Ctrl-C waits for the summary too, so a cancelled run still says what it left.
+        try (Cancellation cancel = Cancellation.install()) {
+            try (AnimationProgress progress = AnimationProgress.start(todo.size(), renderOptions.quiet, err)) {
+                outcome = run.run(todo, cancel, progress);
+            }
+            exit = report(plan, outcome, skipped, err);
+            err.flush();
         }
-        int exit = report(plan, outcome, skipped, err);
         if (gif != null && exit != CANCELLED && (exit == ExitCode.OK || keepGoing)) {
             List<Path> frameFiles = FrameFiles.existing(plan.allFiles());
             if (frameFiles.isEmpty()) {

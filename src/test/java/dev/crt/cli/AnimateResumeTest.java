@@ -43,12 +43,7 @@ class AnimateResumeTest {
         Path killed = dir.resolve("killed");
 
         // A real crt process, killed with SIGKILL (no chance to clean up) once a few frames are written.
-        List<String> command = new ArrayList<>(List.of(
-                Path.of(System.getProperty("java.home"), "bin", "java").toString(),
-                "-cp", System.getProperty("java.class.path"), Main.class.getName()));
-        command.addAll(args(scene, "killed"));
-        Process process = new ProcessBuilder(command).redirectErrorStream(true)
-                .redirectOutput(dir.resolve("killed.log").toFile()).start();
+        Process process = start(scene, "killed", "killed.log");
         try {
             long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(60);
             while (frameCount(killed) < 3 && process.isAlive() && System.nanoTime() < deadline) Thread.sleep(5);
@@ -84,6 +79,37 @@ class AnimateResumeTest {
             assertThat(Files.getLastModifiedTime(f)).as(f.toString()).isEqualTo(times.get(f));
             assertThat(Files.getAttribute(f, "unix:ino")).as(f.toString()).isEqualTo(inodes.get(f));
         }
+    }
+
+    @Test
+    void terminatedRunFinishesItsWritesAndSaysHowToGoOn() throws Exception {
+        Path scene = write(dir.resolve("orbit.crt"), ORBIT);
+        Path out = dir.resolve("out");
+        Process process = start(scene, "out", "terminated.log");
+        try {
+            long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(60);
+            while (frameCount(out) < 2 && process.isAlive() && System.nanoTime() < deadline) Thread.sleep(5);
+            process.destroy();
+            assertThat(process.waitFor(30, TimeUnit.SECONDS)).isTrue();
+        } finally {
+            process.destroyForcibly();
+        }
+        String log = Files.readString(dir.resolve("terminated.log"));
+        // SIGTERM: the JVM reports 128 + 15 after the shutdown hook let the frames in progress stop cleanly.
+        assertThat(process.exitValue()).as(log).isEqualTo(143);
+        assertThat(log).contains("crt: cancelled; the frames written are complete: rerun with --resume");
+        assertThat(temporaryFiles(out)).isEmpty();
+        assertThat(frameCount(out)).isBetween(2, FRAMES - 1);
+    }
+
+    /** A real crt process rendering the frames into {@code folder}, its output going to {@code log}. */
+    private Process start(Path scene, String folder, String log) throws IOException {
+        List<String> command = new ArrayList<>(List.of(
+                Path.of(System.getProperty("java.home"), "bin", "java").toString(),
+                "-cp", System.getProperty("java.class.path"), Main.class.getName()));
+        command.addAll(args(scene, folder));
+        command.remove("-q");
+        return new ProcessBuilder(command).redirectErrorStream(true).redirectOutput(dir.resolve(log).toFile()).start();
     }
 
     @Test
