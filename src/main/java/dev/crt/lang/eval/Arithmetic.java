@@ -18,9 +18,9 @@ final class Arithmetic {
     static Value multiplicative(String op, Value a, Value b, Supplier<SourceSpan> where, Evaluator ev) {
         if (a instanceof NumberValue x && b instanceof NumberValue y) {
             double p = x.value(), q = y.value();
-            return switch (op) {
-                case "*" -> number(p * q, x.integral() && y.integral(), op, where, ev);
-                case "/" -> {
+            return switch (op.charAt(0)) {
+                case '*' -> number(p * q, x.integral() && y.integral(), op, where, ev);
+                case '/' -> {
                     if (q == 0) throw ev.error("division by zero", where.get());
                     yield number(p / q, false, op, where, ev);
                 }
@@ -30,14 +30,14 @@ final class Arithmetic {
                 }
             };
         }
-        if (op.equals("*")) {
+        if (op.charAt(0) == '*') {
             if (a instanceof VectorValue v && b instanceof NumberValue s) return vector(v.vector().times(s.value()), where, ev);
             if (a instanceof NumberValue s && b instanceof VectorValue v) return vector(v.vector().times(s.value()), where, ev);
             if (a instanceof ColorValue c && b instanceof ColorValue d) return color(c.color().times(d.color()), where, ev);
             if (a instanceof ColorValue c && b instanceof NumberValue s) return color(c.color().times(s.value()), where, ev);
             if (a instanceof NumberValue s && b instanceof ColorValue c) return color(c.color().times(s.value()), where, ev);
         }
-        if (op.equals("/") && b instanceof NumberValue s && (a instanceof VectorValue || a instanceof ColorValue)) {
+        if (op.charAt(0) == '/' && b instanceof NumberValue s && (a instanceof VectorValue || a instanceof ColorValue)) {
             if (s.value() == 0) throw ev.error("division by zero", where.get());
             if (a instanceof VectorValue v) return vector(v.vector().div(s.value()), where, ev);
             return color(((ColorValue) a).color().div(s.value()), where, ev);
@@ -46,8 +46,8 @@ final class Arithmetic {
     }
 
     static Value additive(String op, Value a, Value b, Supplier<SourceSpan> where, Evaluator ev) {
-        if (!op.equals("^")) {
-            boolean plus = op.equals("+");
+        if (op.charAt(0) != '^') {
+            boolean plus = op.charAt(0) == '+';
             if (a instanceof NumberValue x && b instanceof NumberValue y) {
                 double r = plus ? x.value() + y.value() : x.value() - y.value();
                 return number(r, x.integral() && y.integral(), op, where, ev);

@@ -33,6 +33,7 @@ import java.util.Random;
 import java.util.Set;
 import org.antlr.v4.runtime.ParserRuleContext;
 import org.antlr.v4.runtime.Token;
+import org.antlr.v4.runtime.tree.ParseTree;
 import org.antlr.v4.runtime.tree.TerminalNode;
 
 /**
@@ -61,6 +62,9 @@ public final class Evaluator extends CRTBaseVisitor<Value> {
     private Map<String, Value> locals;
     private final List<Frame> callStack = new ArrayList<>();
     private final List<EntityValue> placed = new ArrayList<>();
+    private final Map<ParseTree, Code> compiled = new java.util.IdentityHashMap<>();
+    private Set<String> assignedNames = Set.of();
+    private int loopDepth;
     private boolean sawScene;
     private int errors;
 
@@ -78,12 +82,14 @@ public final class Evaluator extends CRTBaseVisitor<Value> {
 
     /** Runs the script; the scene is null when there were errors. Diagnostics are in source order. */
     public Scene run(CRTParser.ScriptContext script, String sourceName) {
+        assignedNames = assignedNames(script);
         try {
             for (CRTParser.StatementContext statement : script.statement()) {
                 runRecovering(statement, Place.TOP, null);
             }
         } catch (EvaluationStopped stop) {
             record(Severity.ERROR, stop.getMessage(), stop.span(), stop.callChain());
+            errors++;
         }
         if (errors > 0) return null;
         if (!sawScene) warn("no Scene block: the picture shows only the background", positions.span(0, 0));
@@ -134,7 +140,7 @@ public final class Evaluator extends CRTBaseVisitor<Value> {
     private void execute(CRTParser.StatementContext statement, Place place, List<EntityValue> out) {
         if (statement instanceof CRTParser.ExpressionStatementContext s) {
             CRTParser.ExpressionContext e = s.expression();
-            Value value = visit(e);
+            Value value = evaluate(e);
             if (e instanceof CRTParser.AssignmentContext) return;
             if (place == Place.SCENE) placeInScene(value, e);
             else if (place == Place.MACRO) contribute(value, out);
@@ -158,10 +164,16 @@ public final class Evaluator extends CRTBaseVisitor<Value> {
 
     private void runWhile(CRTParser.WhileLoopContext loop, Place place, List<EntityValue> out) {
         List<CRTParser.StatementContext> body = loop.block().statement();
-        while (condition(loop.expression(), "while")) {
-            String stop = budget.loopIteration();
-            if (stop != null) throw new EvaluationStopped(stop, span(loop.WHILE().getSymbol()), callChain());
-            executeAll(body, place, out);
+        CRTParser.ExpressionContext condition = loop.expression();
+        loopDepth++;
+        try {
+            while (condition(condition, "while")) {
+                String stop = budget.loopIteration();
+                if (stop != null) throw new EvaluationStopped(stop, span(loop.WHILE().getSymbol()), callChain());
+                executeAll(body, place, out);
+            }
+        } finally {
+            loopDepth--;
         }
     }
 
@@ -175,8 +187,9 @@ public final class Evaluator extends CRTBaseVisitor<Value> {
         }
     }
 
-    private boolean condition(ParserRuleContext e, String keyword) {
-        Value v = visit(e);
+    private boolean condition(ParserRuleContext e, String keyword) { return test(evaluate(e), e, keyword); }
+
+    private boolean test(Value v, ParserRuleContext e, String keyword) {
         if (v instanceof BooleanValue b) return b.value();
         throw error("the condition of '" + keyword + "' must be a boolean, got " + describe(v), span(e));
     }
@@ -217,7 +230,153 @@ public final class Evaluator extends CRTBaseVisitor<Value> {
         return null;
     }
 
+    // ---- compiled expressions ------------------------------------------------------------------
+
+    /** An expression turned into a tree of closures, for expressions that run many times. */
+    private interface Code {
+        Value run();
+    }
+
+    /**
+     * Evaluates an expression. At the top level it runs once, so it is visited directly; inside
+     * loops and macros it is compiled once into closures, which skip the parse tree's wrapper
+     * contexts and the visitor's double dispatch on every later run.
+     */
+    Value evaluate(ParserRuleContext e) {
+        if (loopDepth == 0 && callStack.isEmpty()) return visit(e);
+        Code code = compiled.get(e);
+        if (code == null) {
+            code = compile(e);
+            compiled.put(e, code);
+        }
+        return code.run();
+    }
+
+    private static ParserRuleContext unwrap(ParseTree tree) {
+        ParserRuleContext c = (ParserRuleContext) tree;
+        List<ParseTree> children;
+        while ((children = c.children) != null && children.size() == 1 && children.get(0) instanceof ParserRuleContext inner) {
+            c = inner;
+        }
+        return c;
+    }
+
+    // Each case does exactly what the matching visit method does, through the same helpers.
+    private Code compile(ParseTree tree) {
+        ParserRuleContext c = unwrap(tree);
+        if (c instanceof CRTParser.ParenthesizedContext) return compile(c.getChild(1));
+        if (c instanceof CRTParser.IntLiteralContext || c instanceof CRTParser.FloatLiteralContext
+                || c instanceof CRTParser.StringLiteralContext || c instanceof CRTParser.BooleanLiteralContext) {
+            try {
+                Value constant = visit(c);
+                return () -> constant;
+            } catch (ScriptError e) {
+                return () -> visit(c);
+            }
+        }
+        if (c instanceof CRTParser.VariableContext v) {
+            String name = name(v);
+            return () -> {
+                Value x = lookupOrNull(name);
+                return x != null ? x : visitVariable(v);
+            };
+        }
+        if (c instanceof CRTParser.AssignmentContext a && !a.IDENT().getText().equals("t")) {
+            Code value = compile(a.getChild(2));
+            return () -> assign(a, value.run());
+        }
+        if (c instanceof CRTParser.ComparisonContext k) {
+            Code x = compile(k.getChild(0)), y = compile(k.getChild(2));
+            return () -> compare(k, x.run(), y.run());
+        }
+        if (c instanceof CRTParser.AndContext || c instanceof CRTParser.OrContext) {
+            ParserRuleContext left = (ParserRuleContext) c.getChild(0), right = (ParserRuleContext) c.getChild(2);
+            Code x = compile(left), y = compile(right);
+            if (c instanceof CRTParser.AndContext) {
+                return () -> BooleanValue.of(truth(x.run(), left, "&&") && truth(y.run(), right, "&&"));
+            }
+            return () -> BooleanValue.of(truth(x.run(), left, "||") || truth(y.run(), right, "||"));
+        }
+        if (c instanceof CRTParser.ConditionalContext) {
+            ParserRuleContext condition = (ParserRuleContext) c.getChild(0);
+            Code test = compile(condition), x = compile(c.getChild(2)), y = compile(c.getChild(4));
+            return () -> test(test.run(), condition, "?") ? x.run() : y.run();
+        }
+        if (c instanceof CRTParser.NotContext n) {
+            Code x = compile(n.getChild(1));
+            return () -> not(n, x.run());
+        }
+        if (c instanceof CRTParser.SignContext n) {
+            Code x = compile(n.getChild(1));
+            return () -> sign(n, x.run());
+        }
+        if (c instanceof CRTParser.MultiplicativeContext m) {
+            Code x = compile(m.getChild(0)), y = compile(m.getChild(2));
+            return () -> multiply(m, x.run(), y.run());
+        }
+        if (c instanceof CRTParser.AdditiveContext m) {
+            Code x = compile(m.getChild(0)), y = compile(m.getChild(2));
+            return () -> add(m, x.run(), y.run());
+        }
+        if (c instanceof CRTParser.ModifiedContext m) {
+            Code target = compile(m.getChild(0));
+            int count = (m.getChildCount() - 2) / 2;
+            CRTParser.ModifierContext[] modifiers = new CRTParser.ModifierContext[count];
+            Code[] amounts = new Code[count];
+            for (int i = 0; i < count; i++) {
+                modifiers[i] = (CRTParser.ModifierContext) m.getChild(2 + 2 * i);
+                amounts[i] = compile(modifiers[i].getChild(1));
+            }
+            return () -> {
+                Value value = target.run();
+                for (int i = 0; i < count; i++) value = modify(m, modifiers[i], value, amounts[i].run());
+                return value;
+            };
+        }
+        if (c instanceof CRTParser.CallContext call && call.getChild(0) instanceof CRTParser.AtomContext atom
+                && atom.getChild(0) instanceof CRTParser.VariableContext callee) {
+            String name = name(callee);
+            int count = argumentCount(call);
+            // A built-in whose name the script never binds always means the built-in.
+            if (Builtins.exists(name) && !assignedNames.contains(name) && Builtins.arity(name) == count) {
+                Code[] args = new Code[count];
+                for (int i = 0; i < count; i++) args[i] = compile(call.getChild(2 + 2 * i));
+                return () -> {
+                    Value[] values = new Value[count];
+                    for (int i = 0; i < count; i++) values[i] = args[i].run();
+                    return callBuiltin(name, values, call);
+                };
+            }
+        }
+        return () -> visit(c);
+    }
+
+    /** Every name the script assigns or binds as a macro parameter (walked without recursion: trees may be deep). */
+    private static Set<String> assignedNames(ParseTree root) {
+        Set<String> names = new HashSet<>();
+        java.util.ArrayDeque<ParseTree> pending = new java.util.ArrayDeque<>();
+        pending.push(root);
+        while (!pending.isEmpty()) {
+            ParseTree t = pending.pop();
+            if (t instanceof CRTParser.AssignmentContext a) names.add(a.IDENT().getText());
+            if (t instanceof CRTParser.MacroContext m) {
+                for (TerminalNode p : m.IDENT()) names.add(p.getText());
+            }
+            for (int i = 0; i < t.getChildCount(); i++) {
+                if (t.getChild(i) instanceof ParserRuleContext child) pending.push(child);
+            }
+        }
+        return names;
+    }
+
     // ---- expressions ---------------------------------------------------------------------------
+
+    /**
+     * Skips the chains of one-child contexts the precedence rules leave around every operand
+     * (expression, operation, arithmetic, atom): visiting them costs more than the work they wrap.
+     */
+    @Override
+    public Value visit(ParseTree tree) { return unwrap(tree).accept(this); }
 
     @Override
     public Value visitAssignment(CRTParser.AssignmentContext ctx) {
@@ -225,40 +384,47 @@ public final class Evaluator extends CRTBaseVisitor<Value> {
         if (name.equals("t")) {
             throw error("cannot assign to 't': it is the animation time, set from the command line", span(ctx.IDENT().getSymbol()));
         }
-        Value value = visit(ctx.expression());
-        scope().put(name, value);
+        return assign(ctx, visit(ctx.getChild(2)));
+    }
+
+    private Value assign(CRTParser.AssignmentContext ctx, Value value) {
+        scope().put(ctx.IDENT().getText(), value);
         return value;
     }
 
     private Map<String, Value> scope() { return locals != null ? locals : globals; }
 
     @Override
-    public Value visitPlainExpression(CRTParser.PlainExpressionContext ctx) { return visit(ctx.operation()); }
+    public Value visitPlainExpression(CRTParser.PlainExpressionContext ctx) { return visit(ctx.getChild(0)); }
 
     @Override
-    public Value visitArithmeticOperation(CRTParser.ArithmeticOperationContext ctx) { return visit(ctx.arithmetic()); }
+    public Value visitArithmeticOperation(CRTParser.ArithmeticOperationContext ctx) { return visit(ctx.getChild(0)); }
 
     @Override
-    public Value visitAtom(CRTParser.AtomContext ctx) { return visit(ctx.primary()); }
+    public Value visitAtom(CRTParser.AtomContext ctx) { return visit(ctx.getChild(0)); }
 
     @Override
-    public Value visitParenthesized(CRTParser.ParenthesizedContext ctx) { return visit(ctx.expression()); }
+    public Value visitParenthesized(CRTParser.ParenthesizedContext ctx) { return visit(ctx.getChild(1)); }
 
     @Override
     public Value visitComparison(CRTParser.ComparisonContext ctx) {
-        Value a = visit(ctx.operation(0));
-        Value b = visit(ctx.operation(1));
+        // Children by position: the generated accessors search and allocate on every call.
+        return compare(ctx, visit(ctx.getChild(0)), visit(ctx.getChild(2)));
+    }
+
+    private Value compare(CRTParser.ComparisonContext ctx, Value a, Value b) {
         String op = ctx.op.getText();
-        if (op.equals("==") || op.equals("!=")) {
+        int type = ctx.op.getType();
+        if (type == CRTParser.EQ || type == CRTParser.NE) {
             if (!a.typeName().equals(b.typeName())) throw badOperands(op, a, b, ctx);
             boolean equal = a instanceof NumberValue x && b instanceof NumberValue y ? x.value() == y.value() : a.equals(b);
-            return BooleanValue.of(equal == op.equals("=="));
+            return BooleanValue.of(equal == (type == CRTParser.EQ));
         }
         if (!(a instanceof NumberValue x) || !(b instanceof NumberValue y)) throw badOperands(op, a, b, ctx);
-        return BooleanValue.of(switch (op) {
-            case "<" -> x.value() < y.value();
-            case "<=" -> x.value() <= y.value();
-            case ">" -> x.value() > y.value();
+        return BooleanValue.of(switch (ctx.op.getType()) {
+            case CRTParser.LT -> x.value() < y.value();
+            case CRTParser.LE -> x.value() <= y.value();
+            case CRTParser.GT -> x.value() > y.value();
             default -> x.value() >= y.value();
         });
     }
@@ -273,27 +439,34 @@ public final class Evaluator extends CRTBaseVisitor<Value> {
         return BooleanValue.of(logical(ctx.operation(0), "||") || logical(ctx.operation(1), "||"));
     }
 
-    private boolean logical(ParserRuleContext operand, String op) {
-        Value v = visit(operand);
+    private boolean logical(ParserRuleContext operand, String op) { return truth(visit(operand), operand, op); }
+
+    private boolean truth(Value v, ParserRuleContext operand, String op) {
         if (v instanceof BooleanValue b) return b.value();
         throw error("operator '" + op + "' takes booleans, got " + describe(v), span(operand));
     }
 
     @Override
     public Value visitConditional(CRTParser.ConditionalContext ctx) {
-        return condition(ctx.operation(0), "?") ? visit(ctx.operation(1)) : visit(ctx.operation(2));
+        return condition((ParserRuleContext) ctx.getChild(0), "?") ? visit(ctx.getChild(2)) : visit(ctx.getChild(4));
     }
 
     @Override
     public Value visitNot(CRTParser.NotContext ctx) {
-        Value v = visit(ctx.arithmetic());
+        return not(ctx, visit(ctx.getChild(1)));
+    }
+
+    private Value not(CRTParser.NotContext ctx, Value v) {
         if (v instanceof BooleanValue b) return BooleanValue.of(!b.value());
         throw error("operator '!' cannot apply to " + describe(v), span(ctx));
     }
 
     @Override
     public Value visitSign(CRTParser.SignContext ctx) {
-        Value v = visit(ctx.arithmetic());
+        return sign(ctx, visit(ctx.getChild(1)));
+    }
+
+    private Value sign(CRTParser.SignContext ctx, Value v) {
         boolean minus = ctx.op.getType() == CRTParser.MINUS;
         if (v instanceof NumberValue n) return minus ? new NumberValue(-n.value(), n.integral()) : n;
         if (v instanceof VectorValue vec) return minus ? new VectorValue(vec.vector().negate()) : vec;
@@ -303,20 +476,24 @@ public final class Evaluator extends CRTBaseVisitor<Value> {
 
     @Override
     public Value visitMultiplicative(CRTParser.MultiplicativeContext ctx) {
-        Value a = visit(ctx.arithmetic(0));
-        Value b = visit(ctx.arithmetic(1));
+        return multiply(ctx, visit(ctx.getChild(0)), visit(ctx.getChild(2)));
+    }
+
+    private Value multiply(CRTParser.MultiplicativeContext ctx, Value a, Value b) {
         return Arithmetic.multiplicative(ctx.op.getText(), a, b, () -> span(ctx), this);
     }
 
     @Override
     public Value visitAdditive(CRTParser.AdditiveContext ctx) {
-        Value a = visit(ctx.arithmetic(0));
-        Value b = visit(ctx.arithmetic(1));
+        return add(ctx, visit(ctx.getChild(0)), visit(ctx.getChild(2)));
+    }
+
+    private Value add(CRTParser.AdditiveContext ctx, Value a, Value b) {
         String op = ctx.op.getText();
         if (a instanceof EntityValue x && b instanceof EntityValue y) {
-            CsgOperation operation = switch (op) {
-                case "+" -> CsgOperation.UNION;
-                case "-" -> CsgOperation.DIFFERENCE;
+            CsgOperation operation = switch (op.charAt(0)) {
+                case '+' -> CsgOperation.UNION;
+                case '-' -> CsgOperation.DIFFERENCE;
                 default -> CsgOperation.INTERSECTION;
             };
             return EntityValue.of(new Csg(operation, x.entity(), y.entity(), Transform.IDENTITY, span(ctx)));
@@ -347,28 +524,37 @@ public final class Evaluator extends CRTBaseVisitor<Value> {
 
     @Override
     public Value visitCall(CRTParser.CallContext ctx) {
-        List<CRTParser.ExpressionContext> argExprs = ctx.expression();
-        if (ctx.arithmetic() instanceof CRTParser.AtomContext atom
-                && atom.primary() instanceof CRTParser.VariableContext variable) {
+        if (ctx.getChild(0) instanceof CRTParser.AtomContext atom
+                && atom.getChild(0) instanceof CRTParser.VariableContext variable) {
             String name = name(variable);
             Value bound = lookupOrNull(name);
-            if (bound == null && !isAssigned(name) && Builtins.exists(name)) {
-                return callBuiltin(name, argExprs, ctx);
-            }
-            Value callee = visit(variable);
-            return callMacro(name, callee, argExprs, ctx);
+            if (bound == null && !isAssigned(name) && Builtins.exists(name)) return callBuiltin(name, ctx);
+            return callMacro(name, visit(variable), ctx);
         }
-        return callMacro(null, visit(ctx.arithmetic()), argExprs, ctx);
+        return callMacro(null, visit(ctx.getChild(0)), ctx);
     }
 
-    private Value callBuiltin(String name, List<CRTParser.ExpressionContext> argExprs, CRTParser.CallContext ctx) {
+    // Arguments are taken by position, children 2, 4, …: the generated accessor allocates a list.
+    private static int argumentCount(CRTParser.CallContext ctx) {
+        int n = ctx.getChildCount();
+        return n == 3 ? 0 : (n - 2) / 2;
+    }
+
+    private Value argument(CRTParser.CallContext ctx, int i) { return visit(ctx.getChild(2 + 2 * i)); }
+
+    private Value callBuiltin(String name, CRTParser.CallContext ctx) {
         int arity = Builtins.arity(name);
-        if (argExprs.size() != arity) {
+        int count = argumentCount(ctx);
+        if (count != arity) {
             throw error(name + " takes " + arity + (arity == 1 ? " argument" : " arguments") + ", "
-                    + Builtins.signature(name) + ", got " + argExprs.size(), span(ctx));
+                    + Builtins.signature(name) + ", got " + count, span(ctx));
         }
         Value[] args = new Value[arity];
-        for (int i = 0; i < arity; i++) args[i] = visit(argExprs.get(i));
+        for (int i = 0; i < arity; i++) args[i] = argument(ctx, i);
+        return callBuiltin(name, args, ctx);
+    }
+
+    private Value callBuiltin(String name, Value[] args, CRTParser.CallContext ctx) {
         return Builtins.call(name, new BuiltinCall(name, args, ctx));
     }
 
@@ -416,18 +602,19 @@ public final class Evaluator extends CRTBaseVisitor<Value> {
         public Random random() { return random; }
     }
 
-    private Value callMacro(String name, Value callee, List<CRTParser.ExpressionContext> argExprs, CRTParser.CallContext ctx) {
+    private Value callMacro(String name, Value callee, CRTParser.CallContext ctx) {
         if (!(callee instanceof MacroValue macro)) {
             throw error("cannot call " + describe(callee) + (name != null ? " '" + name + "'" : "") + ": only macros and functions take arguments", span(ctx));
         }
         String label = name != null ? "macro '" + name + "'" : "the macro";
         List<String> params = macro.parameters();
-        if (argExprs.size() != params.size()) {
+        int count = argumentCount(ctx);
+        if (count != params.size()) {
             throw error(label + " takes " + params.size() + (params.size() == 1 ? " argument" : " arguments")
-                    + " (" + String.join(", ", params) + "), got " + argExprs.size(), span(ctx));
+                    + " (" + String.join(", ", params) + "), got " + count, span(ctx));
         }
         Map<String, Value> scope = new HashMap<>();
-        for (int i = 0; i < params.size(); i++) scope.put(params.get(i), visit(argExprs.get(i)));
+        for (int i = 0; i < params.size(); i++) scope.put(params.get(i), argument(ctx, i));
         SourceSpan callSpan = span(ctx);
         if (callStack.size() >= MAX_MACRO_DEPTH) {
             throw error("macro calls nested deeper than " + MAX_MACRO_DEPTH + " (endless recursion?)", callSpan);
@@ -449,17 +636,21 @@ public final class Evaluator extends CRTBaseVisitor<Value> {
 
     @Override
     public Value visitModified(CRTParser.ModifiedContext ctx) {
-        Value target = visit(ctx.arithmetic());
-        for (CRTParser.ModifierContext m : ctx.modifier()) {
-            Value amount = visit(m.arithmetic());
-            EntityValue.ModifierKind kind = switch (m.kind.getType()) {
-                case CRTParser.TRANSLATE -> EntityValue.ModifierKind.TRANSLATE;
-                case CRTParser.ROTATE -> EntityValue.ModifierKind.ROTATE;
-                default -> EntityValue.ModifierKind.SCALE;
-            };
-            target = modify(target, kind, modifierAmount(kind, amount, m), ctx);
+        Value target = visit(ctx.getChild(0));
+        for (int i = 2; i < ctx.getChildCount(); i += 2) {
+            CRTParser.ModifierContext m = (CRTParser.ModifierContext) ctx.getChild(i);
+            target = modify(ctx, m, target, visit(m.getChild(1)));
         }
         return target;
+    }
+
+    private Value modify(CRTParser.ModifiedContext ctx, CRTParser.ModifierContext m, Value target, Value amount) {
+        EntityValue.ModifierKind kind = switch (m.kind.getType()) {
+            case CRTParser.TRANSLATE -> EntityValue.ModifierKind.TRANSLATE;
+            case CRTParser.ROTATE -> EntityValue.ModifierKind.ROTATE;
+            default -> EntityValue.ModifierKind.SCALE;
+        };
+        return modify(target, kind, modifierAmount(kind, amount, m), ctx);
     }
 
     private Vec3 modifierAmount(EntityValue.ModifierKind kind, Value amount, CRTParser.ModifierContext m) {

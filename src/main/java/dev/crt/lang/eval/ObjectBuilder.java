@@ -96,7 +96,7 @@ final class ObjectBuilder {
                 continue;
             }
             try {
-                a.put(name, new Attributes.Given(evaluator.visit(attr.expression()), at));
+                a.put(name, new Attributes.Given(evaluator.evaluate(attr.expression()), at));
             } catch (EvaluationStopped stop) {
                 throw stop;
             } catch (ScriptError e) {

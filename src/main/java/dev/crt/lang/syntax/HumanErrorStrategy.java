@@ -41,7 +41,7 @@ final class HumanErrorStrategy extends DefaultErrorStrategy {
         if (inErrorRecoveryMode(parser)) return;
         beginErrorCondition(parser);
         Token token = parser.getCurrentToken();
-        parser.notifyErrorListeners(token, "unexpected " + describe(token), null);
+        parser.notifyErrorListeners(token, unexpected(parser, token, null), null);
     }
 
     @Override
@@ -50,7 +50,12 @@ final class HumanErrorStrategy extends DefaultErrorStrategy {
         beginErrorCondition(parser);
         Token token = parser.getCurrentToken();
         IntervalSet expected = getExpectedTokens(parser);
-        String message = expectation(parser, expected);
+        String message = null;
+        if (expected.size() == 1 && (expected.contains(CRTParser.RPAREN) || expected.contains(CRTParser.RBRACKET)
+                || expected.contains(CRTParser.RBRACE) || expected.contains(CRTParser.GT))) {
+            message = unclosed(parser.getContext());
+        }
+        if (message == null) message = expectation(parser, expected);
         if (token.getType() != Token.EOF) message += " before " + describe(token);
         parser.notifyErrorListeners(token, message, null);
     }
@@ -67,12 +72,60 @@ final class HumanErrorStrategy extends DefaultErrorStrategy {
     }
 
     private String unexpected(Parser parser, Token token, IntervalSet expected) {
-        if (expected == null || expected.isNil()) {
-            return token.getType() == Token.EOF ? "unexpected end of file" : "unexpected " + describe(token);
+        if (token.getType() == Token.EOF) {
+            String closes = unclosed(parser.getContext());
+            return closes != null ? closes : "unexpected end of file";
         }
-        String expectation = expectation(parser, expected);
-        if (token.getType() == Token.EOF) return expectation;
-        return "unexpected " + describe(token) + "; " + expectation;
+        String message = "unexpected " + describe(token);
+        if (expected != null && expected.size() == 1 && !expected.contains(CRTParser.RBRACE)) {
+            message += "; " + expectation(parser, expected);
+        }
+        return message;
+    }
+
+    /** At the end of the file: what the innermost construct still open needs to be closed. */
+    private String unclosed(ParserRuleContext ctx) {
+        for (ParserRuleContext c = ctx; c != null; c = c.getParent()) {
+            String closer = null;
+            String what = null;
+            if (c instanceof CRTParser.ParenthesizedContext) {
+                closer = ")";
+                what = "'('";
+            } else if (c instanceof CRTParser.CallContext || c instanceof CRTParser.WhileLoopContext
+                    || c instanceof CRTParser.IfChainContext) {
+                if (c.getChildCount() > 0 && !")".equals(c.getChild(c.getChildCount() - 1).getText())
+                        && !(c.getChild(c.getChildCount() - 1) instanceof CRTParser.BlockContext)) {
+                    closer = ")";
+                    what = "'('";
+                }
+            } else if (c instanceof CRTParser.ListContext) {
+                closer = "]";
+                what = "'['";
+            } else if (c instanceof CRTParser.ModifiedContext) {
+                closer = ">";
+                what = "'<'";
+            } else {
+                String brace = braceOf(c);
+                if (brace != null) return "expected '}' to close " + brace;
+            }
+            if (closer != null) return "expected '" + closer + "' to close " + what + " opened at " + opening(c, what);
+        }
+        return null;
+    }
+
+    private String opening(ParserRuleContext c, String what) {
+        String symbol = what.substring(1, 2);
+        for (int i = 0; i < c.getChildCount(); i++) {
+            if (c.getChild(i) instanceof org.antlr.v4.runtime.tree.TerminalNode t && t.getText().equals(symbol)) {
+                return position(t.getSymbol());
+            }
+        }
+        return position(c.getStart());
+    }
+
+    private String position(Token token) {
+        SourceSpan at = positions.span(positions.charOffset(token.getStartIndex()), 0);
+        return at.line() + ":" + at.column();
     }
 
     private String expectation(Parser parser, IntervalSet expected) {
@@ -96,19 +149,23 @@ final class HumanErrorStrategy extends DefaultErrorStrategy {
     /** "Sphere opened at 3:5" for the innermost unclosed brace around the parser's position. */
     private String openedBrace(ParserRuleContext ctx) {
         for (ParserRuleContext c = ctx; c != null; c = c.getParent()) {
-            String what = null;
-            if (c instanceof CRTParser.ObjectContext o) what = o.NAME().getText();
-            else if (c instanceof CRTParser.SettingsBlockContext) what = "Settings";
-            else if (c instanceof CRTParser.SceneBlockContext) what = "Scene";
-            else if (c instanceof CRTParser.MacroContext) what = "Macro";
-            else if (c instanceof CRTParser.BlockContext) what = "the block";
-            Token start = c.getStart();
-            if (what != null && start != null) {
-                SourceSpan at = positions.span(positions.charOffset(start.getStartIndex()), 0);
-                return what + " opened at " + at.line() + ":" + at.column();
-            }
+            String brace = braceOf(c);
+            if (brace != null) return brace;
         }
         return null;
+    }
+
+    /** "Sphere opened at 3:5" when {@code c} is a construct in braces, else null. */
+    private String braceOf(ParserRuleContext c) {
+        String what = null;
+        if (c instanceof CRTParser.ObjectContext o) what = o.NAME().getText();
+        else if (c instanceof CRTParser.SettingsBlockContext) what = "Settings";
+        else if (c instanceof CRTParser.SceneBlockContext) what = "Scene";
+        else if (c instanceof CRTParser.MacroContext) what = "Macro";
+        else if (c instanceof CRTParser.BlockContext) what = "the block";
+        Token start = c.getStart();
+        if (what == null || start == null) return null;
+        return what + " opened at " + position(start);
     }
 
     private static String tokenName(Parser parser, int type) {

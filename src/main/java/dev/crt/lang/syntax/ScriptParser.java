@@ -23,6 +23,16 @@ public final class ScriptParser {
     /** The most syntax errors reported for one file; more only add noise. */
     public static final int MAX_ERRORS = 20;
 
+    // The text of every keyword and operator token, from the grammar's vocabulary.
+    private static final String[] FIXED_TEXT = new String[CRTLexer.VOCABULARY.getMaxTokenType() + 1];
+
+    static {
+        for (int type = 1; type < FIXED_TEXT.length; type++) {
+            String literal = CRTLexer.VOCABULARY.getLiteralName(type);
+            if (literal != null) FIXED_TEXT[type] = literal.substring(1, literal.length() - 1);
+        }
+    }
+
     private ScriptParser() {}
 
     /** The parse tree (null when there were syntax errors) and the syntax diagnostics in source order. */
@@ -40,6 +50,8 @@ public final class ScriptParser {
         // only a script it fails on is parsed again with full LL and error recovery.
         CRTParser parser = new CRTParser(tokens);
         parser.removeErrorListeners();
+        // Child lists trimmed to their size: a huge script's parse tree then fits the heap with room to spare.
+        parser.setTrimParseTree(true);
         parser.getInterpreter().setPredictionMode(PredictionMode.SLL);
         parser.setErrorHandler(new BailErrorStrategy());
         CRTParser.ScriptContext tree;
@@ -63,12 +75,15 @@ public final class ScriptParser {
     }
 
     private static void reportLexicalMistakes(CommonTokenStream tokens, SyntaxErrors errors) {
-        // Names are fixed on their tokens once, shared, so that evaluating them in loops neither
+        // Names and operators are fixed on their tokens once, shared, so that evaluating them in loops neither
         // copies characters again nor rehashes new strings.
         Map<String, String> names = new HashMap<>();
         for (Token token : tokens.getTokens()) {
-            if (token.getType() == CRTLexer.IDENT || token.getType() == CRTLexer.NAME) {
+            int type = token.getType();
+            if (type == CRTLexer.IDENT || type == CRTLexer.NAME) {
                 ((CommonToken) token).setText(names.computeIfAbsent(token.getText(), n -> n));
+            } else if (type > 0 && type < FIXED_TEXT.length && FIXED_TEXT[type] != null) {
+                ((CommonToken) token).setText(FIXED_TEXT[type]);
             }
             if (token.getType() == CRTLexer.UNTERMINATED_STRING) {
                 errors.add(token, "unterminated string (a string ends with \" on the line it starts)");

@@ -1,0 +1,72 @@
+package dev.crt.lang;
+
+import static dev.crt.lang.Scripts.errors;
+import static org.assertj.core.api.Assertions.assertThat;
+
+import java.util.List;
+import org.junit.jupiter.api.Test;
+
+/** Syntax errors: human messages, all of them (up to 20), never ANTLR's console output. */
+class SyntaxErrorsTest {
+    private static void at(Diagnostic d, int line, int column, String message) {
+        assertThat(d.message()).isEqualTo(message);
+        assertThat(d.span().line()).as("line of: " + message).isEqualTo(line);
+        assertThat(d.span().column()).as("column of: " + message).isEqualTo(column);
+    }
+
+    @Test
+    void unclosedObjectNamesWhereItOpened() {
+        List<Diagnostic> es = errors("a = 1\nb = 2\nc = Sphere { radius -> 1\n");
+        assertThat(es).hasSize(1);
+        at(es.get(0), 4, 1, "expected '}' to close Sphere opened at 3:5");
+    }
+
+    @Test
+    void unexpectedToken() {
+        at(errors("s = Sphere { -> 1 }\n").get(0), 1, 14, "unexpected '->'");
+    }
+
+    @Test
+    void severalErrorsInOneFileAreAllReported() {
+        String script = "a = (1 + 2\nb = Sphere { radius 1 }\nc = 3 +\nScene { a b }\nd = ]\n";
+        List<Diagnostic> es = errors(script);
+        assertThat(es).extracting(d -> d.span().line()).containsExactly(2, 2, 4, 5);
+        at(es.get(0), 2, 1, "expected ')' to close '(' opened at 1:5 before 'b'");
+        at(es.get(1), 2, 21, "expected '->' before '1'");
+        assertThat(es).allSatisfy(d -> assertThat(d.message()).doesNotContain("{").doesNotContain("<EOF>"));
+    }
+
+    @Test
+    void atMostTwentyErrorsAreReported() {
+        List<Diagnostic> es = errors("x = ]\n".repeat(50));
+        assertThat(es).hasSize(21);
+        assertThat(es.get(20).message()).isEqualTo("too many errors; stopped after 20");
+    }
+
+    @Test
+    void unterminatedString() {
+        at(errors("Settings { title -> \"Hello\n}\n").get(0), 1, 21,
+                "unterminated string (a string ends with \" on the line it starts)");
+    }
+
+    @Test
+    void strayCharacter() {
+        at(errors("a = 1 # 2\n").get(0), 1, 7, "unexpected character '#'");
+    }
+
+    @Test
+    void assignmentNeedsAnIdentifierOnTheLeft() {
+        at(errors("3 = x\n").get(0), 1, 3, "unexpected '='");
+    }
+
+    @Test
+    void missingParenthesis() {
+        at(errors("x = (1 + 2\n").get(0), 2, 1, "expected ')' to close '(' opened at 1:5");
+    }
+
+    @Test
+    void syntaxErrorsStopBeforeEvaluation() {
+        List<Diagnostic> es = errors("x = sqrt(-1)\ny = )\n");
+        assertThat(es).singleElement().satisfies(d -> assertThat(d.span().line()).isEqualTo(2));
+    }
+}
