@@ -30,9 +30,9 @@ final class Tracer {
     private final Lights lights;
     private final BackgroundShader background;
 
-    private final Ray ray = new Ray();
+    final Ray ray = new Ray();
     private final LineSpan span = new LineSpan();
-    private final Hit hit = new Hit();
+    final Hit hit = new Hit();
     private final SurfacePoint surface = new SurfacePoint();
     private final CsgSolids.Scratch csgScratch;
     private final int[] stack;
@@ -57,6 +57,8 @@ final class Tracer {
         stack = new int[depth];
         stackT = new double[depth];
     }
+
+    Shapes shapes() { return shapes; }
 
     /** Adds (wr, wg, wb) ⊙ trace(o + t·d, depth) to the accumulator. */
     void trace(double ox, double oy, double oz, double dx, double dy, double dz, int depth,

@@ -1,0 +1,198 @@
+package dev.crt.render;
+
+import static dev.crt.render.Scenes.*;
+import static org.assertj.core.api.Assertions.assertThat;
+
+import dev.crt.geom.Transform;
+import dev.crt.geom.Vec3;
+import dev.crt.scene.Background;
+import dev.crt.scene.CsgOperation;
+import dev.crt.scene.Entity;
+import dev.crt.scene.Material;
+import dev.crt.scene.Settings;
+import dev.crt.scene.Sphere;
+import java.util.List;
+import java.util.SplittableRandom;
+import net.jqwik.api.ForAll;
+import net.jqwik.api.Property;
+import net.jqwik.api.constraints.IntRange;
+
+/**
+ * Every intersection routine against an independent slower computation: the exact distance from a
+ * sphere's centre to the line, and for every entity (transformed primitives and CSG trees) a march
+ * along the ray with the entity's inside test, refined by bisection. Rays are random, aimed, far
+ * away (1e5), starting inside, and grazing or tangent.
+ */
+class IntersectionProperties {
+    private static final Material M = matte(rgb(0.5, 0.5, 0.5));
+
+    private static Vec3 unit(SplittableRandom r) {
+        while (true) {
+            Vec3 v = new Vec3(r.nextDouble() * 2 - 1, r.nextDouble() * 2 - 1, r.nextDouble() * 2 - 1);
+            double l = v.length();
+            if (l > 0.1 && l <= 1) return v.div(l);
+        }
+    }
+
+    @Property(tries = 3000)
+    void sphereSpanMatchesTheDistanceFromTheCentreToTheLine(@ForAll long seed) {
+        SplittableRandom r = new SplittableRandom(seed);
+        double scale = Math.pow(10, r.nextInt(-4, 5));
+        Vec3 c = unit(r).times(r.nextBoolean() ? 1e5 : r.nextDouble() * 3 * scale);
+        double radius = scale * (0.1 + r.nextDouble());
+        Vec3 d = unit(r);
+        Vec3 o;
+        switch (r.nextInt(4)) {
+            case 0 -> o = c.plus(unit(r).times(radius * 4 * r.nextDouble()));
+            case 1 -> o = c.minus(d.times(radius * (1 + r.nextDouble() * 1e5)));
+            case 2 -> {
+                // Tangent: the line touches the sphere at c + radius·n.
+                Vec3 n = unit(r);
+                Vec3 tangent = n.cross(unit(r)).normalize();
+                d = tangent;
+                o = c.plus(n.times(radius)).minus(tangent.times(radius * 3 * r.nextDouble()));
+            }
+            default -> o = c.plus(unit(r).times(radius * 0.9 * r.nextDouble()));
+        }
+        Shapes shapes = new Shapes();
+        int s = shapes.add(new Sphere(c, radius, M, Transform.IDENTITY, dev.crt.scene.SourceSpan.NONE), Transform.IDENTITY, 0);
+        Ray ray = new Ray();
+        ray.set(o.x(), o.y(), o.z(), d.x(), d.y(), d.z());
+        LineSpan span = new LineSpan();
+        boolean hit = shapes.span(s, ray, span);
+        Vec3 oc = o.minus(c);
+        double dist = oc.cross(d).length();
+        if (dist < radius * (1 - 1e-9)) assertThat(hit).isTrue();
+        if (dist > radius * (1 + 1e-9)) assertThat(hit).isFalse();
+        if (!hit || dist > radius * (1 - 1e-6)) return;
+        double mid = -oc.dot(d), half = Math.sqrt((radius - dist) * (radius + dist));
+        double tol = 1e-9 * (Math.abs(mid) + radius);
+        assertThat(Math.abs(span.tIn - (mid - half))).isLessThanOrEqualTo(tol);
+        assertThat(Math.abs(span.tOut - (mid + half))).isLessThanOrEqualTo(tol);
+        SurfacePoint p = new SurfacePoint();
+        shapes.surface(s, span.faceIn, span.tIn, ray, p);
+        Vec3 n = new Vec3(p.nx, p.ny, p.nz);
+        assertThat(Math.abs(n.length() - 1)).isLessThan(1e-12);
+        Vec3 expectedN = o.plus(d.times(mid - half)).minus(c).normalize();
+        assertThat(n.minus(expectedN).length()).isLessThan(1e-6);
+        assertThat(Math.abs(new Vec3(p.px, p.py, p.pz).minus(c).length() - radius)).isLessThanOrEqualTo(1e-14 * (c.length() + radius) * 8);
+    }
+
+    @Property(tries = 1500)
+    void boxRaysAlongFacesAndEdgesNeverGiveNaN(@ForAll long seed) {
+        SplittableRandom r = new SplittableRandom(seed);
+        Vec3 lo = new Vec3(-1, -2, -0.5), hi = new Vec3(2, 1, 0.5);
+        Entity b = box(lo, hi, M);
+        Tracer t = tracer(b);
+        // Origin exactly on a face plane, direction parallel to it.
+        int axis = r.nextInt(3);
+        double[] o = {r.nextDouble() * 6 - 3, r.nextDouble() * 6 - 3, r.nextDouble() * 6 - 3};
+        o[axis] = r.nextBoolean() ? lo.get(axis) : hi.get(axis);
+        double[] d = {r.nextDouble() - 0.5, r.nextDouble() - 0.5, r.nextDouble() - 0.5};
+        d[axis] = r.nextBoolean() ? 0.0 : -0.0;
+        Vec3 dir = new Vec3(d[0], d[1], d[2]).normalize();
+        boolean hit = t.closestHit(o[0], o[1], o[2], dir.x(), dir.y(), dir.z(), Double.POSITIVE_INFINITY);
+        if (hit) assertThat(Double.isFinite(t.hit.t) && t.hit.t > 0).isTrue();
+    }
+
+    /** An entity of the chosen kind with random placement. */
+    private static Entity entity(SplittableRandom r, int kind, double spread) {
+        return switch (kind) {
+            case 0 -> sphere(unit(r).times(r.nextDouble() * spread), 0.3 + r.nextDouble() * 1.5, M);
+            case 1 -> box(unit(r).times(spread * r.nextDouble()), unit(r).times(1 + r.nextDouble()), M);
+            case 2 -> plane(unit(r), unit(r).times(r.nextDouble()), M);
+            case 3 -> sphere(unit(r).times(0.5), 0.5 + r.nextDouble(), M).transformed(Solids.randomTransform(r, true, spread));
+            case 4 -> box(unit(r).times(-1), unit(r).times(1).plus(v(1.2, 1.2, 1.2)), M)
+                    .transformed(Solids.randomTransform(r, true, spread));
+            default -> box(v(-1, -0.5, -0.7), v(0.8, 1.1, 0.4), M)
+                    .transformed(Transform.rotation(v(90 * r.nextInt(4), 90 * r.nextInt(4), 90 * r.nextInt(4)))
+                            .then(Transform.scaling(v(0.5 + r.nextDouble(), 0.5 + r.nextDouble(), 0.5 + r.nextDouble())))
+                            .then(Transform.translation(unit(r).times(spread))));
+        };
+    }
+
+    private static Entity tree(SplittableRandom r, int depth) {
+        if (depth == 0 || r.nextInt(4) == 0) return entity(r, r.nextInt(6), 1.5);
+        CsgOperation op = CsgOperation.values()[r.nextInt(3)];
+        Entity e = csg(op, tree(r, depth - 1), tree(r, depth - 1));
+        return r.nextInt(3) == 0 ? e.transformed(Solids.randomTransform(r, true, 1)) : e;
+    }
+
+    static Tracer tracer(Entity... entities) {
+        Settings s = settings(camera(v(0, 0, -5), Vec3.ZERO, 60), List.of(), Background.BLACK, 4, 4);
+        SceneGeometry g = new SceneGeometry(List.of(entities));
+        return new Tracer(g, new Lights(s.lights()), new BackgroundShader(s.background(), 1));
+    }
+
+    @Property(tries = 2500)
+    void firstBoundaryMatchesAMarchWithTheInsideTest(@ForAll long seed, @ForAll @IntRange(min = 0, max = 6) int kind) {
+        SplittableRandom r = new SplittableRandom(seed);
+        Entity e = kind == 6 ? tree(r, 3) : entity(r, kind, 1.5);
+        double far = r.nextInt(5) == 0 ? 1e5 : 0;
+        Vec3 shift = unit(r).times(far);
+        if (far > 0) e = e.transformed(Transform.translation(shift));
+        Vec3 target = shift.plus(unit(r).times(r.nextDouble() * 2));
+        Vec3 o = switch (r.nextInt(3)) {
+            case 0 -> shift.plus(unit(r).times(6 + r.nextDouble() * 10));
+            case 1 -> shift.plus(unit(r).times(r.nextDouble() * 2));
+            default -> shift.plus(unit(r).times(r.nextBoolean() ? 1e3 : 1e5));
+        };
+        Vec3 d = target.minus(o).normalize();
+        if (d.length() != 1 && !(Math.abs(d.length() - 1) < 1e-12)) return;
+        Tracer t = tracer(e);
+        boolean hit = t.closestHit(o.x(), o.y(), o.z(), d.x(), d.y(), d.z(), Double.POSITIVE_INFINITY);
+        double span = o.minus(target).length() + 20;
+        double step = span / 4000;
+        double eps = 1e-9 * (o.length() + 10);
+        // The reference: the first change of the inside-state along (0, span].
+        boolean start = Solids.inside(e, o.plus(d.times(eps * 4)));
+        double ref = Double.NaN;
+        for (int k = 1; k <= 4000; k++) {
+            double tk = k * step;
+            if (Solids.inside(e, o.plus(d.times(tk))) != start) {
+                double a = (k - 1) * step, b = tk;
+                for (int it = 0; it < 200 && b - a > eps * 0.01; it++) {
+                    double m = 0.5 * (a + b);
+                    if (Solids.inside(e, o.plus(d.times(m))) == start) a = m;
+                    else b = m;
+                }
+                ref = 0.5 * (a + b);
+                break;
+            }
+        }
+        double tol = 1e-7 * (o.length() + 10);
+        if (!hit) {
+            assertThat(ref).as("the march finds a boundary the routine missed").isNaN();
+            return;
+        }
+        double th = t.hit.t;
+        assertThat(th).isPositive();
+        if (!Double.isNaN(ref) && Math.abs(th - ref) <= tol) {
+            checkNormal(t, e, d);
+            return;
+        }
+        // Either the routine found a sliver the march stepped over, or the boundary is the origin's own.
+        assertThat(Double.isNaN(ref) || th < ref).as("hit at %s but the march says %s", th, ref).isTrue();
+        Vec3 p = o.plus(d.times(th));
+        double h = tol;
+        boolean here = Solids.inside(e, p);
+        boolean boundary = false;
+        for (Vec3 axis : new Vec3[] {Vec3.X, Vec3.Y, Vec3.Z, d}) {
+            boundary |= Solids.inside(e, p.plus(axis.times(h))) != here || Solids.inside(e, p.minus(axis.times(h))) != here;
+        }
+        assertThat(boundary).as("a hit at %s lies on the solid's boundary", th).isTrue();
+    }
+
+    private static void checkNormal(Tracer t, Entity e, Vec3 d) {
+        SurfacePoint sp = new SurfacePoint();
+        t.shapes().surface(t.hit.shape, t.hit.face, t.hit.t, t.ray, sp);
+        Vec3 n = new Vec3(sp.nx, sp.ny, sp.nz);
+        if (t.hit.flip) n = n.negate();
+        assertThat(Math.abs(n.length() - 1)).isLessThan(1e-12);
+        Vec3 p = new Vec3(sp.px, sp.py, sp.pz);
+        double h = 1e-10 * (p.length() + 1);
+        if (Math.abs(n.dot(d)) < 1e-3) return;
+        assertThat(Solids.inside(e, p.plus(n.times(h)))).as("outside along the normal at %s, n=%s", p, n).isFalse();
+        assertThat(Solids.inside(e, p.minus(n.times(h)))).as("inside against the normal at %s, n=%s", p, n).isTrue();
+    }
+}

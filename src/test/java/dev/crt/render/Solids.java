@@ -1,0 +1,43 @@
+package dev.crt.render;
+
+import dev.crt.geom.Transform;
+import dev.crt.geom.Vec3;
+import dev.crt.scene.Box;
+import dev.crt.scene.Csg;
+import dev.crt.scene.Entity;
+import dev.crt.scene.Plane;
+import dev.crt.scene.Sphere;
+
+/**
+ * The inside test of every entity written directly from its definition (point mapped back through
+ * each transform), as the independent slow reference for intersection properties.
+ */
+final class Solids {
+    private Solids() {}
+
+    static boolean inside(Entity e, Vec3 p) {
+        Vec3 q = e.transform().inverse().applyToPoint(p);
+        if (e instanceof Sphere s) return q.minus(s.center()).length() <= s.radius();
+        if (e instanceof Box b) {
+            return q.x() >= b.min().x() && q.x() <= b.max().x() && q.y() >= b.min().y() && q.y() <= b.max().y()
+                    && q.z() >= b.min().z() && q.z() <= b.max().z();
+        }
+        if (e instanceof Plane pl) return pl.normal().dot(q.minus(pl.position())) <= 0;
+        Csg c = (Csg) e;
+        boolean a = inside(c.left(), q), b = inside(c.right(), q);
+        return switch (c.operation()) {
+            case UNION -> a || b;
+            case INTERSECTION -> a && b;
+            case DIFFERENCE -> a && !b;
+        };
+    }
+
+    /** A random affine transform: scale (non-uniform when asked), rotation, translation. */
+    static Transform randomTransform(java.util.SplittableRandom r, boolean nonUniform, double spread) {
+        double s = 0.5 + r.nextDouble() * 1.5;
+        Vec3 scale = nonUniform ? new Vec3(s, 0.4 + r.nextDouble() * 2, 0.4 + r.nextDouble() * 2) : new Vec3(s, s, s);
+        Vec3 angles = new Vec3(r.nextDouble() * 360, r.nextDouble() * 360, r.nextDouble() * 360);
+        Vec3 move = new Vec3((r.nextDouble() - 0.5) * spread, (r.nextDouble() - 0.5) * spread, (r.nextDouble() - 0.5) * spread);
+        return Transform.scaling(scale).then(Transform.rotation(angles)).then(Transform.translation(move));
+    }
+}
