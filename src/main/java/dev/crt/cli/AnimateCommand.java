@@ -6,8 +6,10 @@ import java.io.PrintWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.HashSet;
 import java.util.List;
 import java.util.Locale;
+import java.util.Set;
 import java.util.concurrent.Callable;
 import picocli.CommandLine.ArgGroup;
 import picocli.CommandLine.Command;
@@ -92,21 +94,16 @@ final class AnimateCommand implements Callable<Integer> {
         CompileOptions options = OptionChecks.compileOptions(spec, scriptOptions);
         Source source = ScriptCompilation.read(sceneFile);
 
-        List<Path> owned = plan.ownedFiles();
-        List<Path> touched = new ArrayList<>(owned);
+        List<AnimationRun.Frame> owned = plan.ownedFrames();
+        List<Path> ownedFiles = owned.stream().map(AnimationRun.Frame::file).toList();
+        List<Path> touched = new ArrayList<>(ownedFiles);
         if (gif != null) touched.add(gif);
         FrameFiles.prepareFolders(touched);
-        List<Path> found = FrameFiles.existing(owned);
+        List<Path> found = FrameFiles.existing(ownedFiles);
         if (!existing.resume && !existing.force) refuseToOverwrite(found, owned.size());
         FrameFiles.removeLeftovers(touched);
-
-        List<AnimationRun.Frame> todo = new ArrayList<>();
-        for (int k = 0; k < plan.range().size(); k++) {
-            if (!plan.shard().owns(k)) continue;
-            int frame = plan.range().frame(k);
-            Path file = plan.pattern().path(frame);
-            if (!(existing.resume && Files.exists(file))) todo.add(new AnimationRun.Frame(frame, file));
-        }
+        Set<Path> kept = existing.resume ? new HashSet<>(found) : Set.of();
+        List<AnimationRun.Frame> todo = owned.stream().filter(f -> !kept.contains(f.file())).toList();
         int skipped = owned.size() - todo.size();
 
         int threads = renderOptions.threads > 0 ? renderOptions.threads : Runtime.getRuntime().availableProcessors();
@@ -144,12 +141,16 @@ final class AnimateCommand implements Callable<Integer> {
 
     /** The checked command line: which frames, which of them are this run's, where they go. */
     private record Plan(FrameRange range, Shard shard, FramePattern pattern, double fps) {
-        List<Path> ownedFiles() {
-            List<Path> files = new ArrayList<>();
-            for (int k = 0; k < range.size(); k++) if (shard.owns(k)) files.add(pattern.path(range.frame(k)));
-            return files;
+        /** This run's frames: the shard's share of the range. */
+        List<AnimationRun.Frame> ownedFrames() {
+            List<AnimationRun.Frame> frames = new ArrayList<>();
+            for (int k = 0; k < range.size(); k++) {
+                if (shard.owns(k)) frames.add(new AnimationRun.Frame(range.frame(k), pattern.path(range.frame(k))));
+            }
+            return frames;
         }
 
+        /** Every frame file of the range, in frame order, whichever shard renders it. */
         List<Path> allFiles() {
             List<Path> files = new ArrayList<>();
             for (int k = 0; k < range.size(); k++) files.add(pattern.path(range.frame(k)));
