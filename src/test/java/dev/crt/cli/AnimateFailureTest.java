@@ -6,6 +6,7 @@ import static dev.crt.cli.AnimateTestSupport.crt;
 import static dev.crt.cli.AnimateTestSupport.temporaryFiles;
 import static dev.crt.cli.AnimateTestSupport.write;
 import static org.assertj.core.api.Assertions.assertThat;
+import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import dev.crt.cli.AnimateTestSupport.Run;
 import java.io.IOException;
@@ -83,6 +84,15 @@ class AnimateFailureTest {
         assertThat(run.exit()).isEqualTo(ExitCode.FILE_ERROR);
         assertThat(run.err()).startsWith("crt: cannot create folder " + dir.resolve("out")).contains("in the way");
         assertThat(run.err()).doesNotContain("rendered");
+    }
+
+    @Test
+    void folderThatTakesNoFilesFailsBeforeAnyWorkEvenForRoot() {
+        // Permission bits do not stop root, but /proc takes no new files for anyone.
+        assumeTrue(Files.isDirectory(Path.of("/proc/self")), "a Linux /proc");
+        Run run = crt("animate", scene(ORBIT).toString(), "--frames", "0..2", "-o", "/proc/f_%02d.png");
+        assertThat(run.exit()).isEqualTo(ExitCode.FILE_ERROR);
+        assertThat(run.err()).isEqualTo("crt: cannot write into folder /proc: files cannot be created there" + System.lineSeparator());
     }
 
     @Test
