@@ -101,7 +101,10 @@ final class AnimateCommand implements Callable<Integer> {
         FrameFiles.prepareFolders(touched);
         List<Path> found = FrameFiles.existing(ownedFiles);
         if (!existing.resume && !existing.force) refuseToOverwrite(found, owned.size());
-        FrameFiles.removeLeftovers(touched);
+        int leftovers = FrameFiles.removeLeftovers(touched);
+        if (leftovers > 0 && !renderOptions.quiet) {
+            err.println("crt: removed " + CheckCommand.count(leftovers, "temporary file") + " that an interrupted run left");
+        }
         Set<Path> kept = existing.resume ? new HashSet<>(found) : Set.of();
         List<AnimationRun.Frame> todo = owned.stream().filter(f -> !kept.contains(f.file())).toList();
         int skipped = owned.size() - todo.size();

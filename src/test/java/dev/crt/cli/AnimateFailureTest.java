@@ -140,8 +140,9 @@ class AnimateFailureTest {
         Path mine = Files.writeString(out.resolve(".f_01.png.tmp-5eed"), "half a frame");
         Path otherShard = Files.writeString(out.resolve(".f_02.png.tmp-5eed"), "another shard is writing this");
         Path unrelated = Files.writeString(out.resolve("notes.txt"), "keep me");
-        Run run = animate(ORBIT, "--frames", "0..3", "--shard", "1/2", "-q");
+        Run run = animate(ORBIT, "--frames", "0..3", "--shard", "1/2");
         assertThat(run.exit()).as(run.err()).isZero();
+        assertThat(run.err()).startsWith("crt: removed 1 temporary file that an interrupted run left");
         assertThat(Files.exists(mine)).isFalse();
         assertThat(Files.exists(otherShard)).isTrue();
         assertThat(Files.exists(unrelated)).isTrue();
