@@ -66,7 +66,7 @@ final class AnimateCommand implements Callable<Integer> {
 
     /** What to do with frames whose files exist already. */
     static final class Existing {
-        @Option(names = "--resume", description = "Skip frames whose files exist (and clean up temporary files a killed run left).")
+        @Option(names = "--resume", description = "Skip frames whose files exist: finish a run that was killed or failed.")
         boolean resume;
 
         @Option(names = "--force", description = "Render every frame again, replacing files that exist.")
