@@ -6,8 +6,10 @@ import java.io.PrintWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.HashSet;
 import java.util.List;
 import java.util.Locale;
+import java.util.Set;
 import java.util.concurrent.Callable;
 import picocli.CommandLine.ArgGroup;
 import picocli.CommandLine.Command;
@@ -64,7 +66,7 @@ final class AnimateCommand implements Callable<Integer> {
 
     /** What to do with frames whose files exist already. */
     static final class Existing {
-        @Option(names = "--resume", description = "Skip frames whose files exist (and clean up temporary files a killed run left).")
+        @Option(names = "--resume", description = "Skip frames whose files exist: finish a run that was killed or failed.")
         boolean resume;
 
         @Option(names = "--force", description = "Render every frame again, replacing files that exist.")
@@ -92,32 +94,34 @@ final class AnimateCommand implements Callable<Integer> {
         CompileOptions options = OptionChecks.compileOptions(spec, scriptOptions);
         Source source = ScriptCompilation.read(sceneFile);
 
-        List<Path> owned = plan.ownedFiles();
-        List<Path> touched = new ArrayList<>(owned);
+        List<AnimationRun.Frame> owned = plan.ownedFrames();
+        List<Path> ownedFiles = owned.stream().map(AnimationRun.Frame::file).toList();
+        List<Path> touched = new ArrayList<>(ownedFiles);
         if (gif != null) touched.add(gif);
         FrameFiles.prepareFolders(touched);
-        List<Path> found = FrameFiles.existing(owned);
+        List<Path> found = FrameFiles.existing(ownedFiles);
         if (!existing.resume && !existing.force) refuseToOverwrite(found, owned.size());
-        FrameFiles.removeLeftovers(touched);
-
-        List<AnimationRun.Frame> todo = new ArrayList<>();
-        for (int k = 0; k < plan.range().size(); k++) {
-            if (!plan.shard().owns(k)) continue;
-            int frame = plan.range().frame(k);
-            Path file = plan.pattern().path(frame);
-            if (!(existing.resume && Files.exists(file))) todo.add(new AnimationRun.Frame(frame, file));
+        int leftovers = FrameFiles.removeLeftovers(touched);
+        if (leftovers > 0 && !renderOptions.quiet) {
+            err.println("crt: removed " + CheckCommand.count(leftovers, "temporary file") + " that an interrupted run left");
         }
+        Set<Path> kept = existing.resume ? new HashSet<>(found) : Set.of();
+        List<AnimationRun.Frame> todo = owned.stream().filter(f -> !kept.contains(f.file())).toList();
         int skipped = owned.size() - todo.size();
 
         int threads = renderOptions.threads > 0 ? renderOptions.threads : Runtime.getRuntime().availableProcessors();
         AnimationRun run = new AnimationRun(source, options, renderOptions::applyTo, jobs, Math.max(1, threads / jobs),
                 keepGoing, err);
         AnimationRun.Outcome outcome;
-        try (Cancellation cancel = Cancellation.install();
-             AnimationProgress progress = AnimationProgress.start(todo.size(), renderOptions.quiet, err)) {
-            outcome = run.run(todo, cancel, progress);
+        int exit;
+        // Ctrl-C waits for the summary too, so a cancelled run still says what it left.
+        try (Cancellation cancel = Cancellation.install()) {
+            try (AnimationProgress progress = AnimationProgress.start(todo.size(), renderOptions.quiet, err)) {
+                outcome = run.run(todo, cancel, progress);
+            }
+            exit = report(plan, outcome, skipped, err);
+            err.flush();
         }
-        int exit = report(plan, outcome, skipped, err);
         if (gif != null && exit != CANCELLED && (exit == ExitCode.OK || keepGoing)) {
             List<Path> frameFiles = FrameFiles.existing(plan.allFiles());
             if (frameFiles.isEmpty()) {
@@ -140,12 +144,16 @@ final class AnimateCommand implements Callable<Integer> {
 
     /** The checked command line: which frames, which of them are this run's, where they go. */
     private record Plan(FrameRange range, Shard shard, FramePattern pattern, double fps) {
-        List<Path> ownedFiles() {
-            List<Path> files = new ArrayList<>();
-            for (int k = 0; k < range.size(); k++) if (shard.owns(k)) files.add(pattern.path(range.frame(k)));
-            return files;
+        /** This run's frames: the shard's share of the range. */
+        List<AnimationRun.Frame> ownedFrames() {
+            List<AnimationRun.Frame> frames = new ArrayList<>();
+            for (int k = 0; k < range.size(); k++) {
+                if (shard.owns(k)) frames.add(new AnimationRun.Frame(range.frame(k), pattern.path(range.frame(k))));
+            }
+            return frames;
         }
 
+        /** Every frame file of the range, in frame order, whichever shard renders it. */
         List<Path> allFiles() {
             List<Path> files = new ArrayList<>();
             for (int k = 0; k < range.size(); k++) files.add(pattern.path(range.frame(k)));

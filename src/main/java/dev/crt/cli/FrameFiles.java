@@ -1,9 +1,12 @@
 package dev.crt.cli;
 
 import java.io.IOException;
+import java.nio.file.AccessDeniedException;
 import java.nio.file.DirectoryStream;
 import java.nio.file.FileAlreadyExistsException;
+import java.nio.file.FileSystemException;
 import java.nio.file.Files;
+import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.LinkedHashSet;
@@ -28,13 +31,13 @@ final class FrameFiles {
             } catch (FileAlreadyExistsException e) {
                 throw new CliFailure(ExitCode.FILE_ERROR, "cannot create folder " + folder + ": a file of that name is in the way");
             } catch (IOException e) {
-                throw new CliFailure(ExitCode.FILE_ERROR, "cannot create folder " + folder + ": " + ScriptCompilation.plain(e));
+                throw new CliFailure(ExitCode.FILE_ERROR, "cannot create folder " + folder + ": " + why(e));
             }
             // Permission bits do not tell the whole story (read-only mounts, quotas, running as root), so try.
             try {
                 Files.delete(Files.createTempFile(folder, ".crt-probe-", ".tmp"));
             } catch (IOException e) {
-                throw new CliFailure(ExitCode.FILE_ERROR, "cannot write into folder " + folder + ": " + ScriptCompilation.plain(e));
+                throw new CliFailure(ExitCode.FILE_ERROR, "cannot write into folder " + folder + ": " + why(e));
             }
         }
     }
@@ -71,6 +74,14 @@ final class FrameFiles {
             }
         }
         return removed;
+    }
+
+    /** The reason in plain words: file system exceptions carry the path, which the message names already. */
+    private static String why(IOException e) {
+        if (e instanceof AccessDeniedException) return "permission denied";
+        if (e instanceof FileSystemException f && f.getReason() != null) return f.getReason();
+        if (e instanceof NoSuchFileException) return "files cannot be created there";
+        return ScriptCompilation.plain(e);
     }
 
     /** The start of the name of a temporary file that becomes {@code file} (see ImageFiles.write). */

@@ -26,7 +26,8 @@ final class FrameJob {
         try {
             ImageFiles.write(image, out, scene.settings().gamma(), textChunks(scene.settings()));
         } catch (IOException e) {
-            throw new CliFailure(ExitCode.FILE_ERROR, "cannot write " + out + ": " + ScriptCompilation.plain(e));
+            // ImageFiles' messages already say "cannot write OUT: why".
+            throw new CliFailure(ExitCode.FILE_ERROR, ScriptCompilation.plain(e));
         }
         return new Outcome(renderer.stats(), System.nanoTime() - start);
     }

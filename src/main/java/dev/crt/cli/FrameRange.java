@@ -8,11 +8,17 @@ import java.util.regex.Pattern;
  * index is its position in the range (0 for the first frame), which is what shards divide.
  */
 record FrameRange(int first, int last, int step) {
+    /** More frames than this in one range is surely a typo, and their file names alone would fill memory. */
+    static final int MAX_FRAMES = 1_000_000;
+
     private static final Pattern SYNTAX = Pattern.compile("(-?\\d+)(?:\\.\\.(-?\\d+)(?::(\\d+))?)?");
 
     FrameRange {
         if (last < first) throw new IllegalArgumentException("the last frame " + last + " comes before the first " + first);
         if (step < 1) throw new IllegalArgumentException("the step must be at least 1, got " + step);
+        if (((long) last - first) / step >= MAX_FRAMES) {
+            throw new IllegalArgumentException("that is more than " + MAX_FRAMES + " frames; split it into several ranges");
+        }
     }
 
     /** Parses {@code A..B}, {@code A..B:STEP} or a single frame {@code A}; a bad value is an IllegalArgumentException. */

@@ -28,8 +28,11 @@ public final class ImageFiles {
         ImageWriter writer = writerFor(out);
         Path target = out.toAbsolutePath();
         Path folder = target.getParent();
-        if (folder == null || !Files.isDirectory(folder)) {
+        if (folder == null || !Files.exists(folder)) {
             throw new IOException("cannot write " + out + ": the folder " + folder + " does not exist");
+        }
+        if (!Files.isDirectory(folder)) {
+            throw new IOException("cannot write " + out + ": " + folder + " is a file, not a folder");
         }
         Path temp = folder.resolve("." + target.getFileName() + ".tmp-"
                 + Long.toHexString(ThreadLocalRandom.current().nextLong() & Long.MAX_VALUE));

@@ -10,6 +10,7 @@ import static dev.crt.cli.AnimateTestSupport.write;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import dev.crt.cli.AnimateTestSupport.Run;
+import dev.crt.image.GifWriterTest;
 import java.awt.image.BufferedImage;
 import java.io.IOException;
 import java.nio.file.Files;
@@ -124,6 +125,17 @@ class AnimateCommandTest {
             assertThat(reader.read(0).getWidth()).isEqualTo(32);
             reader.dispose();
         }
+        // In frame order: each GIF frame is closest to the frame file of its own number.
+        List<int[]> shown = GifWriterTest.composited(gif, new ArrayList<>());
+        for (int i = 0; i < 5; i++) {
+            int closest = -1;
+            double best = Double.MAX_VALUE;
+            for (int f = 0; f < 5; f++) {
+                double d = difference(shown.get(i), pixels(ImageIO.read(dir.resolve("out/f_00" + f + ".png").toFile())));
+                if (d < best) { best = d; closest = f; }
+            }
+            assertThat(closest).isEqualTo(i);
+        }
         // The GIF is derived from the frames: --resume remakes it from what exists.
         Files.delete(dir.resolve("out/f_002.png"));
         Run resumed = crt("animate", scene().toString(), "--frames", "0..4", "-o", pattern("out"), "--gif", gif.toString(),
@@ -140,6 +152,14 @@ class AnimateCommandTest {
         assertThat(run.out()).contains("times and rays summed over 3 frames").contains("compile").contains("bvh build")
                 .contains("render").contains("write").contains("frames/s").containsPattern("overhead +\\d+\\.\\d %");
         assertThat(run.err()).isEmpty();
+    }
+
+    private static double difference(int[] a, int[] b) {
+        double sum = 0;
+        for (int i = 0; i < a.length; i++) {
+            for (int shift = 0; shift <= 16; shift += 8) sum += Math.abs((a[i] >> shift & 0xff) - (b[i] >> shift & 0xff));
+        }
+        return sum;
     }
 
     private static int[] pixels(BufferedImage image) {

@@ -6,6 +6,7 @@ import static dev.crt.cli.AnimateTestSupport.crt;
 import static dev.crt.cli.AnimateTestSupport.temporaryFiles;
 import static dev.crt.cli.AnimateTestSupport.write;
 import static org.assertj.core.api.Assertions.assertThat;
+import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import dev.crt.cli.AnimateTestSupport.Run;
 import java.io.IOException;
@@ -86,6 +87,15 @@ class AnimateFailureTest {
     }
 
     @Test
+    void folderThatTakesNoFilesFailsBeforeAnyWorkEvenForRoot() {
+        // Permission bits do not stop root, but /proc takes no new files for anyone.
+        assumeTrue(Files.isDirectory(Path.of("/proc/self")), "a Linux /proc");
+        Run run = crt("animate", scene(ORBIT).toString(), "--frames", "0..2", "-o", "/proc/f_%02d.png");
+        assertThat(run.exit()).isEqualTo(ExitCode.FILE_ERROR);
+        assertThat(run.err()).isEqualTo("crt: cannot write into folder /proc: files cannot be created there" + System.lineSeparator());
+    }
+
+    @Test
     void missingScriptIsAFileError() {
         Run run = crt("animate", dir.resolve("nope.crt").toString(), "--frames", "0..2", "-o", pattern());
         assertThat(run.exit()).isEqualTo(ExitCode.FILE_ERROR);
@@ -130,8 +140,9 @@ class AnimateFailureTest {
         Path mine = Files.writeString(out.resolve(".f_01.png.tmp-5eed"), "half a frame");
         Path otherShard = Files.writeString(out.resolve(".f_02.png.tmp-5eed"), "another shard is writing this");
         Path unrelated = Files.writeString(out.resolve("notes.txt"), "keep me");
-        Run run = animate(ORBIT, "--frames", "0..3", "--shard", "1/2", "-q");
+        Run run = animate(ORBIT, "--frames", "0..3", "--shard", "1/2");
         assertThat(run.exit()).as(run.err()).isZero();
+        assertThat(run.err()).startsWith("crt: removed 1 temporary file that an interrupted run left");
         assertThat(Files.exists(mine)).isFalse();
         assertThat(Files.exists(otherShard)).isTrue();
         assertThat(Files.exists(unrelated)).isTrue();

@@ -18,6 +18,7 @@ import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.concurrent.TimeUnit;
+import java.util.stream.Stream;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -43,12 +44,7 @@ class AnimateResumeTest {
         Path killed = dir.resolve("killed");
 
         // A real crt process, killed with SIGKILL (no chance to clean up) once a few frames are written.
-        List<String> command = new ArrayList<>(List.of(
-                Path.of(System.getProperty("java.home"), "bin", "java").toString(),
-                "-cp", System.getProperty("java.class.path"), Main.class.getName()));
-        command.addAll(args(scene, "killed"));
-        Process process = new ProcessBuilder(command).redirectErrorStream(true)
-                .redirectOutput(dir.resolve("killed.log").toFile()).start();
+        Process process = start(scene, "killed", "killed.log");
         try {
             long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(60);
             while (frameCount(killed) < 3 && process.isAlive() && System.nanoTime() < deadline) Thread.sleep(5);
@@ -87,6 +83,37 @@ class AnimateResumeTest {
     }
 
     @Test
+    void terminatedRunFinishesItsWritesAndSaysHowToGoOn() throws Exception {
+        Path scene = write(dir.resolve("orbit.crt"), ORBIT);
+        Path out = dir.resolve("out");
+        Process process = start(scene, "out", "terminated.log");
+        try {
+            long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(60);
+            while (frameCount(out) < 2 && process.isAlive() && System.nanoTime() < deadline) Thread.sleep(5);
+            process.destroy();
+            assertThat(process.waitFor(30, TimeUnit.SECONDS)).isTrue();
+        } finally {
+            process.destroyForcibly();
+        }
+        String log = Files.readString(dir.resolve("terminated.log"));
+        // SIGTERM: the JVM reports 128 + 15 after the shutdown hook let the frames in progress stop cleanly.
+        assertThat(process.exitValue()).as(log).isEqualTo(143);
+        assertThat(log).contains("crt: cancelled; the frames written are complete: rerun with --resume");
+        assertThat(temporaryFiles(out)).isEmpty();
+        assertThat(frameCount(out)).isBetween(2, FRAMES - 1);
+    }
+
+    /** A real crt process rendering the frames into {@code folder}, its output going to {@code log}. */
+    private Process start(Path scene, String folder, String log) throws IOException {
+        List<String> command = new ArrayList<>(List.of(
+                Path.of(System.getProperty("java.home"), "bin", "java").toString(),
+                "-cp", System.getProperty("java.class.path"), Main.class.getName()));
+        command.addAll(args(scene, folder));
+        command.remove("-q");
+        return new ProcessBuilder(command).redirectErrorStream(true).redirectOutput(dir.resolve(log).toFile()).start();
+    }
+
+    @Test
     void resumeAfterAFixedScriptErrorRendersOnlyTheMissingFrames() throws IOException {
         Path scene = write(dir.resolve("orbit.crt"), ORBIT + "if (t == 5) { broken = nothing_here }\n");
         Run failed = crt(args(scene, "out").toArray(String[]::new));
@@ -101,7 +128,11 @@ class AnimateResumeTest {
         assertSameFiles(dir.resolve("out"), dir.resolve("whole"));
     }
 
-    private static int frameCount(Path folder) {
-        return (int) contents(folder).keySet().stream().filter(n -> n.endsWith(".png") && !n.startsWith(".")).count();
+    /** Frames written so far; only names are read, as files come and go while crt runs. */
+    private static int frameCount(Path folder) throws IOException {
+        if (!Files.isDirectory(folder)) return 0;
+        try (Stream<Path> files = Files.list(folder)) {
+            return (int) files.map(f -> f.getFileName().toString()).filter(n -> n.endsWith(".png") && !n.startsWith(".")).count();
+        }
     }
 }

@@ -36,6 +36,8 @@ class FrameRangeTest {
         FrameRange r = FrameRange.parse("-2147483648..2147483647:1000000000");
         assertThat(r.size()).isEqualTo(5);
         assertThat(r.frame(4)).isEqualTo(1852516352);
+        assertThat(FrameRange.parse("1..1000000").size()).isEqualTo(1_000_000);
+        assertThatThrownBy(() -> FrameRange.parse("0..1000000")).hasMessageContaining("more than 1000000 frames");
     }
 
     @Test

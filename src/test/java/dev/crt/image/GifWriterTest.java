@@ -17,7 +17,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.w3c.dom.Node;
 
-class GifWriterTest {
+public class GifWriterTest {
     @TempDir
     Path dir;
 
@@ -45,7 +45,7 @@ class GifWriterTest {
     }
 
     /** Reads a GIF back as whole frames, drawing each stored rectangle over the previous frame as a viewer does. */
-    static List<int[]> composited(Path gif, List<Integer> delays) throws IOException {
+    public static List<int[]> composited(Path gif, List<Integer> delays) throws IOException {
         List<int[]> frames = new ArrayList<>();
         try (ImageInputStream in = ImageIO.createImageInputStream(gif.toFile())) {
             ImageReader reader = ImageIO.getImageReadersByFormatName("gif").next();
