@@ -71,10 +71,18 @@ final class HumanErrorStrategy extends DefaultErrorStrategy {
             return closes != null ? closes : "unexpected end of file";
         }
         String message = "unexpected " + describe(token);
+        if (isReservedWord(token)) return message + " (it is a reserved word and cannot name a variable)";
         if (expected != null && expected.size() == 1 && !expected.contains(CRTParser.RBRACE)) {
             message += "; " + expectation(parser, expected);
         }
         return message;
+    }
+
+    private static boolean isReservedWord(Token token) {
+        return switch (token.getType()) {
+            case CRTParser.SCALE, CRTParser.TRANSLATE, CRTParser.ROTATE, CRTParser.TRUE, CRTParser.FALSE -> true;
+            default -> false;
+        };
     }
 
     /** "expected ')' to close '(' opened at 1:5" for the innermost construct still open, or null. */
