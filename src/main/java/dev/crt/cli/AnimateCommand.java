@@ -83,6 +83,10 @@ final class AnimateCommand implements Callable<Integer> {
     @Mixin
     ScriptOptions scriptOptions;
 
+    /** Not an option of animate (t is the frame number); accepted only to say so plainly. */
+    @Option(names = "--time", hidden = true)
+    Double time;
+
     @Mixin
     RenderOptions renderOptions;
 
@@ -91,7 +95,7 @@ final class AnimateCommand implements Callable<Integer> {
         PrintWriter out = spec.commandLine().getOut();
         PrintWriter err = spec.commandLine().getErr();
         Plan plan = checkUsage();
-        CompileOptions options = OptionChecks.compileOptions(spec, scriptOptions);
+        CompileOptions options = OptionChecks.compileOptions(spec, scriptOptions, 0);
         Source source = ScriptCompilation.read(sceneFile);
 
         List<AnimationRun.Frame> owned = plan.ownedFrames();
@@ -164,7 +168,7 @@ final class AnimateCommand implements Callable<Integer> {
     /** Every check that needs no file: a bad value is a usage error (exit code 2) before any work. */
     private Plan checkUsage() {
         renderOptions.validate(spec);
-        if (spec.commandLine().getParseResult().hasMatchedOption("--time")) {
+        if (time != null) {
             throw usage("--time does not apply to crt animate: t is the frame number (use crt render --time T for one frame)");
         }
         OptionChecks.requireAtLeast(spec, jobs, 1, "--jobs");

@@ -28,11 +28,14 @@ final class CheckCommand implements Callable<Integer> {
     @Mixin
     ScriptOptions scriptOptions;
 
+    @Mixin
+    TimeOption timeOption;
+
     @Override
     public Integer call() {
         PrintWriter out = spec.commandLine().getOut();
         PrintWriter err = spec.commandLine().getErr();
-        var options = OptionChecks.compileOptions(spec, scriptOptions);
+        var options = OptionChecks.compileOptions(spec, scriptOptions, timeOption.time);
         int exit = ExitCode.OK;
         for (Path file : scenes) {
             Source source;

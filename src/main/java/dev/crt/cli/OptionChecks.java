@@ -8,9 +8,9 @@ import picocli.CommandLine.ParameterException;
 final class OptionChecks {
     private OptionChecks() {}
 
-    static CompileOptions compileOptions(CommandSpec spec, ScriptOptions options) {
+    static CompileOptions compileOptions(CommandSpec spec, ScriptOptions options, double time) {
         try {
-            return options.toCompileOptions();
+            return options.toCompileOptions(time);
         } catch (IllegalArgumentException e) {
             throw new ParameterException(spec.commandLine(), e.getMessage());
         }

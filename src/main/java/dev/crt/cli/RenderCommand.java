@@ -36,6 +36,9 @@ final class RenderCommand implements Callable<Integer> {
     ScriptOptions scriptOptions;
 
     @Mixin
+    TimeOption timeOption;
+
+    @Mixin
     RenderOptions renderOptions;
 
     @Override
@@ -43,7 +46,7 @@ final class RenderCommand implements Callable<Integer> {
         PrintWriter out = spec.commandLine().getOut();
         PrintWriter err = spec.commandLine().getErr();
         renderOptions.validate(spec);
-        CompileOptions options = OptionChecks.compileOptions(spec, scriptOptions);
+        CompileOptions options = OptionChecks.compileOptions(spec, scriptOptions, timeOption.time);
         Path target = output != null ? output : defaultOutput(sceneFile);
         OutputFiles.checkWritableImage(target);
 

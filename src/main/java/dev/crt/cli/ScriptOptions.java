@@ -7,20 +7,18 @@ import java.util.ArrayList;
 import java.util.List;
 import picocli.CommandLine.Option;
 
-/** Options that change how a script compiles: asset folders, the time t, the evaluation budget. */
+/** Options that change how a script compiles: asset folders and the evaluation budget. */
 final class ScriptOptions {
     @Option(names = "--assets", paramLabel = "DIR",
             description = "Folder to look up assets such as panorama images in (repeatable).")
     List<Path> assetDirs = new ArrayList<>();
 
-    @Option(names = "--time", paramLabel = "T", description = "Value of the time variable t (default: ${DEFAULT-VALUE}).")
-    double time = 0;
-
     @Option(names = "--time-budget", paramLabel = "SECONDS",
             description = "Stop evaluating a script after this long (default: ${DEFAULT-VALUE}).")
     double timeBudget = CompileOptions.DEFAULT_TIME_BUDGET.toSeconds();
 
-    CompileOptions toCompileOptions() {
+    /** The compile options for the time {@code t}. */
+    CompileOptions toCompileOptions(double time) {
         if (!(timeBudget > 0)) {
             throw new IllegalArgumentException("--time-budget must be a positive number of seconds");
         }
