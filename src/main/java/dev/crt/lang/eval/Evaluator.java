@@ -76,7 +76,9 @@ public final class Evaluator extends CRTBaseVisitor<Value> {
         this.budget = new Budget(options.loopBudget(), options.timeBudget());
         this.objects = new ObjectBuilder(this, new Assets(scriptFolder, options.assetDirs()));
         this.settings = new SettingsState();
-        globals.put("t", NumberValue.ofFloat(options.time()));
+        // A whole time (every frame number of crt animate) is an integer, so `xs[t]` and `t % 2` work.
+        double time = options.time();
+        globals.put("t", time == Math.rint(time) && Math.abs(time) < 1e15 ? NumberValue.ofInt(time) : NumberValue.ofFloat(time));
         globals.put("pi", NumberValue.ofFloat(Math.PI));
     }
 
