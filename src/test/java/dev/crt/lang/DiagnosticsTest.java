@@ -124,6 +124,14 @@ class DiagnosticsTest {
     }
 
     @Test
+    void errorsInLoopsAreTheSameAsAtTheTopLevel() {
+        at(error("i = 0\nwhile (i < 3) {\n  x = \"a\" * vec3(1,2,3)\n  i = i + 1\n}\n"), 3, 7,
+                "operator '*' cannot apply to string and vec3");
+        at(error("m = Macro () { sqrt(-1) }\nm()\n"), 1, 16, "sqrt of a negative number (-1)");
+        at(error("i = 0\nwhile (i < 3) { y = sin(1, 2) i = i + 1 }\n"), 2, 21, "sin takes 1 argument, sin(number), got 2");
+    }
+
+    @Test
     void functionArgumentsAreChecked() {
         at(error("x = sqrt(1, 2)\n"), 1, 5, "sqrt takes 1 argument, sqrt(number), got 2");
         at(error("x = sqrt(vec3(1,2,3))\n"), 1, 5, "wrong arguments: sqrt takes sqrt(number), got sqrt(vec3)");
