@@ -115,7 +115,7 @@ class RobustnessTest {
         };
         long start = System.nanoTime();
         assertThatThrownBy(() -> r.render(2, cancelAfterFirstTile)).isInstanceOf(RenderCancelledException.class);
-        // The whole render would take minutes; a cancelled one ends within a tile row (generous for a loaded machine).
+        // The whole render takes tens of seconds; a cancelled one ends within a tile row (bound generous for a loaded machine).
         assertThat((System.nanoTime() - start) / 1e9).isLessThan(5.0);
         assertThat(tiles.get()).isLessThan(20);
     }
