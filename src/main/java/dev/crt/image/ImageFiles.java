@@ -90,7 +90,12 @@ public final class ImageFiles {
     static byte[] encode8(FrameBuffer image, double gamma) {
         float[] data = image.data();
         byte[] bytes = new byte[data.length];
-        for (int i = 0; i < data.length; i++) bytes[i] = (byte) toByte(data[i], gamma);
+        if (gamma == 1) {
+            for (int i = 0; i < data.length; i++) bytes[i] = (byte) toByte(data[i], 1);
+        } else {
+            GammaEncoder encoder = new GammaEncoder(gamma);
+            for (int i = 0; i < data.length; i++) bytes[i] = (byte) encoder.encode(data[i]);
+        }
         return bytes;
     }
 }

@@ -80,12 +80,11 @@ final class BvhBuilder {
     }
 
     private static final class Node {
-        final double[] box;
+        /** Filled in by {@link #split}. */
+        final double[] box = new double[6];
         Node left, right;
         int first, count;
         int size = 1;
-
-        Node(double[] box) { this.box = box; }
     }
 
     private final class Task extends RecursiveTask<Node> {
@@ -99,7 +98,7 @@ final class BvhBuilder {
 
         @Override
         protected Node compute() {
-            Node node = new Node(rangeBounds(lo, hi));
+            Node node = new Node();
             int mid = split(node, lo, hi);
             if (mid < 0) return node;
             Task left = new Task(lo, mid);
@@ -113,7 +112,7 @@ final class BvhBuilder {
     }
 
     private Node subtree(int lo, int hi) {
-        Node node = new Node(rangeBounds(lo, hi));
+        Node node = new Node();
         int mid = split(node, lo, hi);
         if (mid < 0) return node;
         node.left = subtree(lo, mid);
@@ -122,32 +121,26 @@ final class BvhBuilder {
         return node;
     }
 
-    private double[] rangeBounds(int lo, int hi) {
-        double[] b = {Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY,
-                Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY};
-        for (int i = lo; i < hi; i++) {
-            int k = 6 * i;
-            for (int a = 0; a < 3; a++) {
-                b[a] = Math.min(b[a], bounds[k + a]);
-                b[3 + a] = Math.max(b[3 + a], bounds[k + 3 + a]);
-            }
-        }
-        return b;
-    }
-
     /** Partitions [lo, hi) by the best SAH split and returns its middle, or makes {@code node} a leaf and returns −1. */
     private int split(Node node, int lo, int hi) {
         int n = hi - lo;
-        if (n <= 1) return leaf(node, lo, hi);
+        // One pass for the node's box and the bounds of the centroids.
+        double[] box = node.box;
         double[] cmin = {Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY};
         double[] cmax = {Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY};
+        for (int a = 0; a < 3; a++) {
+            box[a] = Double.POSITIVE_INFINITY;
+            box[3 + a] = Double.NEGATIVE_INFINITY;
+        }
         for (int i = lo; i < hi; i++) {
-            int k = 3 * i;
             for (int a = 0; a < 3; a++) {
-                cmin[a] = Math.min(cmin[a], centroid[k + a]);
-                cmax[a] = Math.max(cmax[a], centroid[k + a]);
+                box[a] = Math.min(box[a], bounds[6 * i + a]);
+                box[3 + a] = Math.max(box[3 + a], bounds[6 * i + 3 + a]);
+                cmin[a] = Math.min(cmin[a], centroid[3 * i + a]);
+                cmax[a] = Math.max(cmax[a], centroid[3 * i + a]);
             }
         }
+        if (n <= 1) return leaf(node, lo, hi);
         double bestCost = Double.POSITIVE_INFINITY;
         int bestAxis = -1, bestBin = -1;
         int[] binCount = new int[3 * BINS];

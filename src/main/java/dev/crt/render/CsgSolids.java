@@ -35,8 +35,6 @@ final class CsgSolids {
     private int leafSize, programSize;
     int maxLeaves;
 
-    int count() { return count; }
-
     /** Flattens {@code csg} placed by {@code parent}; returns its index and its world bounds in {@code bounds[0]}. */
     int add(Csg csg, Transform parent, Shapes shapes, ToIntFunction<Primitive> materials, Aabb[] bounds) {
         int tree = count++;

@@ -24,7 +24,8 @@ import java.util.SplittableRandom;
  * show render time growing like log n. Run:
  * <pre>mvn -B -q -o test-compile && java -cp target/classes:target/test-classes dev.crt.render.RenderBench [all|boxes|spheres] [threads] [maxSpheres]</pre>
  * or, for one cold render in a fresh process (the figure to compare with POV-Ray's whole run),
- * {@code time java -cp target/classes:target/test-classes dev.crt.render.RenderBench once}.
+ * {@code time java -cp target/classes:target/test-classes dev.crt.render.RenderBench once [out.png]}
+ * (it writes the PNG too, as POV-Ray does).
  */
 public final class RenderBench {
     private RenderBench() {}
@@ -102,12 +103,17 @@ public final class RenderBench {
                 .getProcessCpuTime();
     }
 
-    public static void main(String[] args) {
+    public static void main(String[] args) throws java.io.IOException {
         if (args.length > 0 && args[0].equals("once")) {
             // One cold render, as a whole process would do it: compare with `time povray …`.
-            Renderer r = Renderer.prepare(boxes(1280, 720));
-            r.render(2, RenderMonitor.NONE);
-            System.out.printf("cold render %.1f ms, %.2f Mrays/s%n", r.stats().renderNanos() / 1e6, r.stats().megaRaysPerSecond());
+            Scene scene = boxes(1280, 720);
+            Renderer r = Renderer.prepare(scene);
+            dev.crt.image.FrameBuffer image = r.render(2, RenderMonitor.NONE);
+            long write = System.nanoTime();
+            java.nio.file.Path out = java.nio.file.Path.of(args.length > 1 ? args[1] : "bench-crt.png");
+            dev.crt.image.ImageFiles.write(image, out, scene.settings().gamma(), java.util.Map.of("Title", "bench"));
+            System.out.printf("cold render %.1f ms, %.2f Mrays/s, png %.1f ms%n", r.stats().renderNanos() / 1e6,
+                    r.stats().megaRaysPerSecond(), (System.nanoTime() - write) / 1e6);
             return;
         }
         String what = args.length > 0 ? args[0] : "all";

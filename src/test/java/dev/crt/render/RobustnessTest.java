@@ -115,7 +115,8 @@ class RobustnessTest {
         };
         long start = System.nanoTime();
         assertThatThrownBy(() -> r.render(2, cancelAfterFirstTile)).isInstanceOf(RenderCancelledException.class);
-        assertThat((System.nanoTime() - start) / 1e9).isLessThan(2.0);
+        // The whole render takes tens of seconds; a cancelled one ends within a tile row (bound generous for a loaded machine).
+        assertThat((System.nanoTime() - start) / 1e9).isLessThan(5.0);
         assertThat(tiles.get()).isLessThan(20);
     }
 
