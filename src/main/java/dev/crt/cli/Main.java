@@ -1,6 +1,9 @@
 package dev.crt.cli;
 
 import java.io.PrintWriter;
+import java.net.URISyntaxException;
+import java.nio.file.Files;
+import java.nio.file.Path;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
 
@@ -25,7 +28,25 @@ public final class Main implements Runnable {
     }
 
     public static void main(String[] args) {
+        useShippedAssets();
         System.exit(run(args));
+    }
+
+    /**
+     * Points the compiler at the assets CRT ships (the {@code assets} folder beside
+     * {@code target/}), unless {@code -Dcrt.assets} already names a folder.
+     */
+    static void useShippedAssets() {
+        if (System.getProperty("crt.assets") != null) return;
+        try {
+            Path code = Path.of(Main.class.getProtectionDomain().getCodeSource().getLocation().toURI());
+            Path root = code.getParent() == null ? null : code.getParent().getParent();
+            if (root != null && Files.isDirectory(root.resolve("assets"))) {
+                System.setProperty("crt.assets", root.resolve("assets").toString());
+            }
+        } catch (URISyntaxException | SecurityException | IllegalArgumentException e) {
+            // Without a known location the shipped assets are simply not searched.
+        }
     }
 
     /** Runs crt with {@code args} on the process's stdout and stderr; returns the exit code. */
