@@ -12,7 +12,8 @@ import javax.imageio.ImageIO;
 
 /** Reading pictures that scenes use (panoramas, later textures). */
 public final class PictureFiles {
-    private static final long MAX_PIXELS = 1L << 28;
+    // 64 megapixels (a 16384 x 4096 panorama) already take 768 MB as floats.
+    private static final long MAX_PIXELS = 1L << 26;
 
     private PictureFiles() {}
 
@@ -36,7 +37,9 @@ public final class PictureFiles {
             return fromImage(image, file);
         } catch (IOException e) {
             throw e;
-        } catch (RuntimeException | OutOfMemoryError e) {
+        } catch (OutOfMemoryError e) {
+            throw new IOException(file + " is too large to load into memory");
+        } catch (RuntimeException e) {
             // Decoders throw all sorts of unchecked exceptions on damaged files.
             throw new IOException(file + " is damaged or not an image CRT can decode");
         }

@@ -50,12 +50,12 @@ public final class CrtCompiler {
         }
         try {
             ScriptParser.Parsed parsed = ScriptParser.parse(positions);
-            if (parsed.tree() == null) return new CompileResult(null, parsed.errors());
+            if (parsed.statements() == null) return new CompileResult(null, parsed.errors());
             Path folder = source.file() == null ? null : source.file().toAbsolutePath().getParent();
             Evaluator evaluator = new Evaluator(positions, options, folder);
             running.set(evaluator);
             try {
-                Scene scene = evaluator.run(parsed.tree(), name);
+                Scene scene = evaluator.run(parsed.statements(), parsed.assignedNames(), name);
                 return new CompileResult(scene, evaluator.diagnostics());
             } catch (StackOverflowError e) {
                 List<Diagnostic> all = new ArrayList<>(evaluator.diagnostics());

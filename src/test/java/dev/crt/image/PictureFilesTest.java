@@ -60,6 +60,9 @@ class PictureFilesTest {
         Path header = Files.write(dir.resolve("h.ppm"), "P6 x".getBytes(StandardCharsets.US_ASCII));
         assertThatThrownBy(() -> PictureFiles.read(header))
                 .isInstanceOf(IOException.class).hasMessageContaining("damaged PPM header");
+        Path empty = Files.write(dir.resolve("e.ppm"), "P6 0 1 255\n".getBytes(StandardCharsets.US_ASCII));
+        assertThatThrownBy(() -> PictureFiles.read(empty))
+                .isInstanceOf(IOException.class).hasMessageContaining("has an unusable size 0x1");
         byte[] png = Files.readAllBytes(writeTinyPng());
         Path cut = Files.write(dir.resolve("cut.png"), java.util.Arrays.copyOf(png, png.length / 2));
         assertThatThrownBy(() -> PictureFiles.read(cut)).isInstanceOf(IOException.class);

@@ -3,8 +3,8 @@ package dev.crt.lang;
 /**
  * Prints how long compiles take: 100,000 objects placed by a macro and loops (first compile after
  * JVM start), and a 2,500-line script in the original CRT's style (warm, best of 20).
- * Run: {@code mvn -q -o test-compile && java -cp "target/classes:target/test-classes:$(cat cp.txt)" dev.crt.lang.CompileSpeed}
- * with cp.txt from {@code mvn -q -o dependency:build-classpath -Dmdep.outputFile=cp.txt}.
+ * Run: {@code mvn -q -o test-compile dependency:build-classpath -Dmdep.outputFile=target/cp.txt}, then
+ * {@code java -cp "target/classes:target/test-classes:$(cat target/cp.txt)" dev.crt.lang.CompileSpeed}.
  */
 public final class CompileSpeed {
     private CompileSpeed() {}

@@ -73,7 +73,7 @@ class CompilerFuzzTest {
                 case 2 -> swapWords(s, random);
                 case 3 -> s.setLength(at);
                 case 4 -> {
-                    for (int i = random.nextInt(8); i >= 0; i--) s.insert(at, (char) random.nextInt(0x3000));
+                    for (int i = random.nextInt(8); i >= 0; i--) s.insert(at, (char) random.nextInt(0x10000));
                 }
                 default -> s.insert(at, " " + TOKENS[random.nextInt(TOKENS.length)] + " ");
             }
@@ -92,7 +92,7 @@ class CompilerFuzzTest {
         s.append(String.join(" ", words));
     }
 
-    @Property(tries = 2500)
+    @Property(tries = 2000)
     void compilingAnythingGivesASceneOrErrors(@ForAll("mangledScripts") String script) throws Exception {
         CompileResult r = CompletableFuture.supplyAsync(() -> CrtCompiler.compile(Source.of("fuzz.crt", script), OPTIONS))
                 .get(30, TimeUnit.SECONDS);

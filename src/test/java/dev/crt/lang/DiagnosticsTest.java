@@ -95,6 +95,12 @@ class DiagnosticsTest {
     }
 
     @Test
+    void unknownFunctionSuggestsTheClosest() {
+        at(error("x = sqr(4)\n"), 1, 5, "unknown function or macro 'sqr' (did you mean 'sqrt'?)");
+        at(error("spheres = Macro () { }\nScene { sphere() }\n"), 2, 9, "unknown function or macro 'sphere' (did you mean 'spheres'?)");
+    }
+
+    @Test
     void assigningTimeIsAnError() {
         at(error("t = 3\n"), 1, 1, "cannot assign to 't': it is the animation time, set from the command line");
     }
@@ -115,6 +121,14 @@ class DiagnosticsTest {
         at(error("x = 1 && true\n"), 1, 5, "operator '&&' takes booleans, got number");
         at(error("x = !3\n"), 1, 5, "operator '!' cannot apply to number");
         at(error("if (1) { }\n"), 1, 5, "the condition of 'if' must be a boolean, got number");
+    }
+
+    @Test
+    void errorsInLoopsAreTheSameAsAtTheTopLevel() {
+        at(error("i = 0\nwhile (i < 3) {\n  x = \"a\" * vec3(1,2,3)\n  i = i + 1\n}\n"), 3, 7,
+                "operator '*' cannot apply to string and vec3");
+        at(error("m = Macro () { sqrt(-1) }\nm()\n"), 1, 16, "sqrt of a negative number (-1)");
+        at(error("i = 0\nwhile (i < 3) { y = sin(1, 2) i = i + 1 }\n"), 2, 21, "sin takes 1 argument, sin(number), got 2");
     }
 
     @Test
@@ -188,6 +202,42 @@ class DiagnosticsTest {
         CompileResult r = CrtCompiler.compile(Source.of("tree.crt",
                 "tree = Macro (n) { if (n > 0) { tree(n - 1) tree(n - 1) } }\ntree(60)\n"), quick);
         assertThat(r.diagnostics().get(0).message()).startsWith("evaluation stopped: it took longer than the time budget");
+    }
+
+    @Test
+    void listsCannotGrowWithoutBound() {
+        at(error("xs = [1]\nwhile (true) { xs = xs + xs }\n"), 2, 21, "a list of 16,777,216 items is too long (at most 10,000,000)");
+    }
+
+    @Test
+    void interruptingTheCallerCancelsTheCompile() throws InterruptedException {
+        java.util.concurrent.atomic.AtomicReference<CompileResult> result = new java.util.concurrent.atomic.AtomicReference<>();
+        Thread caller = new Thread(() -> result.set(CrtCompiler.compile(Source.of("spin.crt", "while (true) { }\n"),
+                new CompileOptions(0, List.of(), Long.MAX_VALUE, Duration.ofSeconds(60)))));
+        caller.start();
+        Thread.sleep(300);
+        caller.interrupt();
+        caller.join(10_000);
+        assertThat(caller.isAlive()).isFalse();
+        at(result.get().diagnostics().get(0), 1, 1, "evaluation stopped: the compile was cancelled");
+    }
+
+    @Test
+    void anEndlessTimeBudgetIsAccepted() {
+        CompileResult r = CrtCompiler.compile(Source.of("x.crt", "while (true) { }\n"),
+                new CompileOptions(0, List.of(), 5000, Duration.ofSeconds(Long.MAX_VALUE)));
+        assertThat(r.diagnostics().get(0).message()).startsWith("evaluation stopped: loops ran 5,000 iterations");
+    }
+
+    @Test
+    void settingsAttributesNeedTheRightKinds() {
+        at(error("Settings { lights -> [PointLight { origin -> vec3(0,0,0) }, 3] }\n"), 1, 12,
+                "attribute 'lights' of Settings expects a list of lights, but item 1 is a number");
+        at(error("Settings { camera -> Sphere { } }\n"), 1, 12, "attribute 'camera' of Settings expects a camera, got entity");
+        at(error("Settings { title -> 3 }\n"), 1, 12, "attribute 'title' of Settings expects a string, got number");
+        at(error("Settings { colour -> 3 }\n"), 1, 12, "unknown attribute 'colour' for Settings");
+        at(error("c = Camera { position -> vec3(1,1,1) pointing -> vec3(1,1,1) }\n"), 1, 38,
+                "the camera's pointing must differ from its position");
     }
 
     @Test

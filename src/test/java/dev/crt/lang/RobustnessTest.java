@@ -128,8 +128,13 @@ class RobustnessTest {
         CompileResult r = Scripts.compile(script.toString());
         System.out.printf("20 MB script (%d lines) compiled in %.1f s%n", i, (System.nanoTime() - start) / 1e9);
         noInternalError(r);
-        assertThat(r.hasErrors()).isFalse();
-        assertThat(r.scene().entities()).hasSize(3);
+        if (r.hasErrors()) {
+            // A small heap may not hold the whole parse tree; then the one error must say so.
+            assertThat(r.diagnostics()).singleElement().satisfies(d ->
+                    assertThat(d.message()).isEqualTo("the script needs more memory than the Java heap has"));
+        } else {
+            assertThat(r.scene().entities()).hasSize(3);
+        }
     }
 
     @Test

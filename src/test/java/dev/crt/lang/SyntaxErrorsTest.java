@@ -60,6 +60,11 @@ class SyntaxErrorsTest {
     }
 
     @Test
+    void reservedWordsCannotBeAssigned() {
+        at(errors("scale = 2\n").get(0), 1, 1, "unexpected 'scale' (it is a reserved word and cannot name a variable)");
+    }
+
+    @Test
     void missingParenthesis() {
         at(errors("x = (1 + 2\n").get(0), 2, 1, "expected ')' to close '(' opened at 1:5");
     }

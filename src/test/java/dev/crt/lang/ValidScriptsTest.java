@@ -364,6 +364,23 @@ class ValidScriptsTest {
     }
 
     @Test
+    void aHundredThousandObjectsFromLoops() {
+        Scene s = scene(CompileSpeed.hundredThousandObjects());
+        assertThat(s.entities()).hasSize(317 * 317);
+        assertPoint(s.entities().get(317 * 317 - 1).transform().applyToPoint(Vec3.ZERO), 316 * 0.25, 316 * 0.25, 0);
+    }
+
+    @Test
+    void expressionsInLoopsMeanWhatTheyMeanOnce() {
+        String body = "a = [1, 2][1] * -3 + (true && !false ? 4 % 3 : 0) + len([1]) + sqrt(4) / 2 + pow(2, 2)\n"
+                + "b = vec3(1, 2, 3) == vec3(0,0,0) || 2 >= 1 ? 1 : 0\n";
+        Scene once = scene(CAMERA + body + "Scene { Sphere { radius -> a + b } }\n");
+        Scene looped = scene(CAMERA + "i = 0\nwhile (i < 3) {\n" + body + "i = i + 1\n}\nScene { Sphere { radius -> a + b } }\n");
+        assertThat(((Sphere) once.entities().get(0)).radius()).isEqualTo(2);
+        assertThat(((Sphere) looped.entities().get(0)).radius()).isEqualTo(2);
+    }
+
+    @Test
     void definedButUnplacedObjectsCostNothing() {
         Scene s = scene(CAMERA + "a = Sphere { }\nScene { }\n");
         assertThat(s.entities()).isEmpty();

@@ -18,7 +18,7 @@ final class Budget {
     Budget(long loopLimit, Duration timeLimit) {
         this.loopLimit = loopLimit;
         this.timeLimit = timeLimit;
-        this.timeLimitNanos = timeLimit.toNanos();
+        this.timeLimitNanos = nanos(timeLimit);
         this.startNanos = System.nanoTime();
     }
 
@@ -43,6 +43,15 @@ final class Budget {
     }
 
     void cancel() { cancelled = true; }
+
+    /** A budget too long to count in nanoseconds is as good as none. */
+    private static long nanos(Duration d) {
+        try {
+            return Math.max(0, d.toNanos());
+        } catch (ArithmeticException tooLong) {
+            return Long.MAX_VALUE;
+        }
+    }
 
     private static String describe(Duration d) {
         long ms = d.toMillis();

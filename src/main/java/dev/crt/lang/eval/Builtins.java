@@ -12,6 +12,7 @@ import java.util.HashMap;
 import java.util.Map;
 import java.util.Random;
 import java.util.Set;
+import java.util.function.DoubleUnaryOperator;
 
 /** The built-in functions of section 10, with their argument checks and domain checks. */
 final class Builtins {
@@ -125,7 +126,7 @@ final class Builtins {
         ALL.put(signature.substring(0, signature.indexOf('(')), new Builtin(signature, arity, body));
     }
 
-    private static void unary(String name, java.util.function.DoubleUnaryOperator f) {
+    private static void unary(String name, DoubleUnaryOperator f) {
         define(name + "(number)", c -> {
             double r = f.applyAsDouble(c.number(0));
             if (!Double.isFinite(r)) throw c.error(name + "(" + NumberValue.format(c.number(0)) + ") has no finite value");

@@ -1,5 +1,6 @@
 package dev.crt.lang.eval;
 
+import dev.crt.geom.Transform;
 import dev.crt.geom.Vec3;
 import dev.crt.lang.CompileOptions;
 import dev.crt.lang.Diagnostic;
@@ -21,11 +22,13 @@ import dev.crt.scene.CsgOperation;
 import dev.crt.scene.Entity;
 import dev.crt.scene.Scene;
 import dev.crt.scene.SourceSpan;
-import dev.crt.geom.Transform;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.Comparator;
 import java.util.HashMap;
 import java.util.HashSet;
+import java.util.IdentityHashMap;
+import java.util.Iterator;
 import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Map;
@@ -62,7 +65,7 @@ public final class Evaluator extends CRTBaseVisitor<Value> {
     private Map<String, Value> locals;
     private final List<Frame> callStack = new ArrayList<>();
     private final List<EntityValue> placed = new ArrayList<>();
-    private final Map<ParseTree, Code> compiled = new java.util.IdentityHashMap<>();
+    private final Map<ParseTree, Code> compiled = new IdentityHashMap<>();
     private Set<String> assignedNames = Set.of();
     private int loopDepth;
     private boolean sawScene;
@@ -80,13 +83,14 @@ public final class Evaluator extends CRTBaseVisitor<Value> {
     /** Asks a running evaluation to stop soon (another thread may call it). */
     public void cancel() { budget.cancel(); }
 
-    /** Runs the script; the scene is null when there were errors. Diagnostics are in source order. */
-    public Scene run(CRTParser.ScriptContext script, String sourceName) {
-        assignedNames = assignedNames(script);
+    /**
+     * Runs the script's top-level statements in order; {@code assignedNames} are the names it ever
+     * assigns or binds. The scene is null when there were errors. Diagnostics are in source order.
+     */
+    public Scene run(Iterator<CRTParser.StatementContext> statements, Set<String> assignedNames, String sourceName) {
+        this.assignedNames = assignedNames;
         try {
-            for (CRTParser.StatementContext statement : script.statement()) {
-                runRecovering(statement, Place.TOP, null);
-            }
+            while (statements.hasNext()) runRecovering(statements.next(), Place.TOP, null);
         } catch (EvaluationStopped stop) {
             record(Severity.ERROR, stop.getMessage(), stop.span(), stop.callChain());
             errors++;
@@ -105,7 +109,7 @@ public final class Evaluator extends CRTBaseVisitor<Value> {
     /** Every diagnostic so far, in source order. */
     public List<Diagnostic> diagnostics() {
         List<Diagnostic> sorted = new ArrayList<>(diagnostics);
-        sorted.sort(java.util.Comparator.comparingInt(d -> d.span().start()));
+        sorted.sort(Comparator.comparingInt(d -> d.span().start()));
         return sorted;
     }
 
@@ -351,24 +355,6 @@ public final class Evaluator extends CRTBaseVisitor<Value> {
         return () -> visit(c);
     }
 
-    /** Every name the script assigns or binds as a macro parameter (walked without recursion: trees may be deep). */
-    private static Set<String> assignedNames(ParseTree root) {
-        Set<String> names = new HashSet<>();
-        java.util.ArrayDeque<ParseTree> pending = new java.util.ArrayDeque<>();
-        pending.push(root);
-        while (!pending.isEmpty()) {
-            ParseTree t = pending.pop();
-            if (t instanceof CRTParser.AssignmentContext a) names.add(a.IDENT().getText());
-            if (t instanceof CRTParser.MacroContext m) {
-                for (TerminalNode p : m.IDENT()) names.add(p.getText());
-            }
-            for (int i = 0; i < t.getChildCount(); i++) {
-                if (t.getChild(i) instanceof ParserRuleContext child) pending.push(child);
-            }
-        }
-        return names;
-    }
-
     // ---- expressions ---------------------------------------------------------------------------
 
     /**
@@ -480,7 +466,7 @@ public final class Evaluator extends CRTBaseVisitor<Value> {
     }
 
     private Value multiply(CRTParser.MultiplicativeContext ctx, Value a, Value b) {
-        return Arithmetic.multiplicative(ctx.op.getText(), a, b, () -> span(ctx), this);
+        return Arithmetic.multiplicative(ctx.op.getText(), a, b, ctx, this);
     }
 
     @Override
@@ -498,7 +484,7 @@ public final class Evaluator extends CRTBaseVisitor<Value> {
             };
             return EntityValue.of(new Csg(operation, x.entity(), y.entity(), Transform.IDENTITY, span(ctx)));
         }
-        return Arithmetic.additive(op, a, b, () -> span(ctx), this);
+        return Arithmetic.additive(op, a, b, ctx, this);
     }
 
     @Override
@@ -528,7 +514,12 @@ public final class Evaluator extends CRTBaseVisitor<Value> {
                 && atom.getChild(0) instanceof CRTParser.VariableContext variable) {
             String name = name(variable);
             Value bound = lookupOrNull(name);
-            if (bound == null && !isAssigned(name) && Builtins.exists(name)) return callBuiltin(name, ctx);
+            if (bound == null && !isAssigned(name)) {
+                if (Builtins.exists(name)) return callBuiltin(name, ctx);
+                Set<String> known = new LinkedHashSet<>(Builtins.names());
+                known.addAll(visibleNames());
+                throw error("unknown function or macro '" + name + "'" + Spelling.suggestion(name, known), span(variable));
+            }
             return callMacro(name, visit(variable), ctx);
         }
         return callMacro(null, visit(ctx.getChild(0)), ctx);
@@ -741,9 +732,13 @@ public final class Evaluator extends CRTBaseVisitor<Value> {
         if (Builtins.exists(name)) {
             throw error("'" + name + "' is a function: call it as " + Builtins.signature(name), span(ctx));
         }
-        Set<String> known = new LinkedHashSet<>(globals.keySet());
-        if (locals != null) known.addAll(locals.keySet());
-        throw error("variable '" + name + "' is not assigned" + Spelling.suggestion(name, known), span(ctx));
+        throw error("variable '" + name + "' is not assigned" + Spelling.suggestion(name, visibleNames()), span(ctx));
+    }
+
+    private Set<String> visibleNames() {
+        Set<String> names = new LinkedHashSet<>(globals.keySet());
+        if (locals != null) names.addAll(locals.keySet());
+        return names;
     }
 
     private String name(CRTParser.VariableContext ctx) {
@@ -846,6 +841,4 @@ public final class Evaluator extends CRTBaseVisitor<Value> {
     }
 
     static String describe(Value v) { return v.typeName(); }
-
-    Random random() { return random; }
 }

@@ -1,6 +1,7 @@
 package dev.crt.lang.eval;
 
 import java.util.Collection;
+import java.util.Locale;
 
 /** "did you mean …?" suggestions: the closest known name within a small edit distance. */
 final class Spelling {
@@ -12,7 +13,7 @@ final class Spelling {
         int bestDistance = Integer.MAX_VALUE;
         int allowed = Math.max(1, Math.min(3, wrong.length() / 3));
         for (String candidate : known) {
-            int d = distance(wrong.toLowerCase(java.util.Locale.ROOT), candidate.toLowerCase(java.util.Locale.ROOT));
+            int d = distance(wrong.toLowerCase(Locale.ROOT), candidate.toLowerCase(Locale.ROOT));
             if (d < bestDistance || (d == bestDistance && best != null && candidate.compareTo(best) < 0)) {
                 bestDistance = d;
                 best = candidate;

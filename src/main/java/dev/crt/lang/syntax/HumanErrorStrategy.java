@@ -6,11 +6,11 @@ import dev.crt.scene.SourceSpan;
 import java.util.ArrayList;
 import java.util.List;
 import org.antlr.v4.runtime.DefaultErrorStrategy;
+import org.antlr.v4.runtime.FailedPredicateException;
 import org.antlr.v4.runtime.InputMismatchException;
 import org.antlr.v4.runtime.NoViableAltException;
 import org.antlr.v4.runtime.Parser;
 import org.antlr.v4.runtime.ParserRuleContext;
-import org.antlr.v4.runtime.RecognitionException;
 import org.antlr.v4.runtime.Token;
 import org.antlr.v4.runtime.misc.IntervalSet;
 
@@ -61,14 +61,8 @@ final class HumanErrorStrategy extends DefaultErrorStrategy {
     }
 
     @Override
-    protected void reportFailedPredicate(Parser parser, org.antlr.v4.runtime.FailedPredicateException e) {
+    protected void reportFailedPredicate(Parser parser, FailedPredicateException e) {
         parser.notifyErrorListeners(e.getOffendingToken(), "unexpected " + describe(e.getOffendingToken()), e);
-    }
-
-    @Override
-    public void reportError(Parser parser, RecognitionException e) {
-        if (inErrorRecoveryMode(parser)) return;
-        super.reportError(parser, e);
     }
 
     private String unexpected(Parser parser, Token token, IntervalSet expected) {
@@ -77,13 +71,21 @@ final class HumanErrorStrategy extends DefaultErrorStrategy {
             return closes != null ? closes : "unexpected end of file";
         }
         String message = "unexpected " + describe(token);
+        if (isReservedWord(token)) return message + " (it is a reserved word and cannot name a variable)";
         if (expected != null && expected.size() == 1 && !expected.contains(CRTParser.RBRACE)) {
             message += "; " + expectation(parser, expected);
         }
         return message;
     }
 
-    /** At the end of the file: what the innermost construct still open needs to be closed. */
+    private static boolean isReservedWord(Token token) {
+        return switch (token.getType()) {
+            case CRTParser.SCALE, CRTParser.TRANSLATE, CRTParser.ROTATE, CRTParser.TRUE, CRTParser.FALSE -> true;
+            default -> false;
+        };
+    }
+
+    /** "expected ')' to close '(' opened at 1:5" for the innermost construct still open, or null. */
     private String unclosed(ParserRuleContext ctx) {
         for (ParserRuleContext c = ctx; c != null; c = c.getParent()) {
             String closer = null;

@@ -8,17 +8,29 @@ import dev.crt.lang.parser.CRTParser;
 import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.HashMap;
+import java.util.HashSet;
+import java.util.Iterator;
 import java.util.List;
 import java.util.Map;
+import java.util.Set;
 import org.antlr.v4.runtime.BailErrorStrategy;
+import org.antlr.v4.runtime.CharStream;
 import org.antlr.v4.runtime.CharStreams;
 import org.antlr.v4.runtime.CommonToken;
+import org.antlr.v4.runtime.CommonTokenFactory;
 import org.antlr.v4.runtime.CommonTokenStream;
 import org.antlr.v4.runtime.Token;
+import org.antlr.v4.runtime.TokenSource;
+import org.antlr.v4.runtime.UnbufferedTokenStream;
 import org.antlr.v4.runtime.atn.PredictionMode;
+import org.antlr.v4.runtime.misc.Pair;
 import org.antlr.v4.runtime.misc.ParseCancellationException;
 
-/** Parses a script into a tree, or reports every syntax error (up to a limit) as diagnostics. */
+/**
+ * Checks a whole script for syntax errors, reporting every one (up to a limit) as diagnostics;
+ * a script without errors is then handed out one top-level statement at a time, so that a huge
+ * script never holds all of its parse tree in memory at once.
+ */
 public final class ScriptParser {
     /** The most syntax errors reported for one file; more only add noise. */
     public static final int MAX_ERRORS = 20;
@@ -35,62 +47,124 @@ public final class ScriptParser {
 
     private ScriptParser() {}
 
-    /** The parse tree (null when there were syntax errors) and the syntax diagnostics in source order. */
-    public record Parsed(CRTParser.ScriptContext tree, List<Diagnostic> errors) {}
+    /**
+     * The outcome of the syntax check: the top-level statements (null when there were syntax
+     * errors), the syntax diagnostics in source order, and every name the script assigns or binds
+     * as a macro parameter.
+     */
+    public record Parsed(Iterator<CRTParser.StatementContext> statements, List<Diagnostic> errors, Set<String> assignedNames) {}
 
     public static Parsed parse(TextPositions positions) {
-        CRTLexer lexer = new CRTLexer(CharStreams.fromString(positions.text()));
+        CharStream chars = CharStreams.fromString(positions.text());
+        CRTLexer lexer = new CRTLexer(chars);
         lexer.removeErrorListeners();
         CommonTokenStream tokens = new CommonTokenStream(lexer);
         tokens.fill();
         SyntaxErrors errors = new SyntaxErrors(positions);
         reportLexicalMistakes(tokens, errors);
+        Set<String> assigned = assignedNames(tokens.getTokens());
 
-        // Two stages, as ANTLR recommends: the fast SLL prediction succeeds for almost every script;
-        // only a script it fails on is parsed again with full LL and error recovery.
+        // Two stages, as ANTLR recommends: the fast SLL prediction, without building a tree,
+        // succeeds for almost every script; only a script it fails on is parsed again with full
+        // LL and error recovery, which reports the errors.
         CRTParser parser = new CRTParser(tokens);
         parser.removeErrorListeners();
-        // Child lists trimmed to their size: a huge script's parse tree then fits the heap with room to spare.
-        parser.setTrimParseTree(true);
+        parser.setBuildParseTree(false);
         parser.getInterpreter().setPredictionMode(PredictionMode.SLL);
         parser.setErrorHandler(new BailErrorStrategy());
-        CRTParser.ScriptContext tree;
+        PredictionMode enough = PredictionMode.SLL;
         try {
-            tree = parser.script();
+            parser.script();
         } catch (ParseCancellationException sllFailed) {
+            enough = PredictionMode.LL;
             tokens.seek(0);
             parser.reset();
+            parser.setBuildParseTree(true);
             parser.getInterpreter().setPredictionMode(PredictionMode.LL);
             parser.setErrorHandler(new HumanErrorStrategy(positions));
             parser.addErrorListener(errors);
             try {
-                tree = parser.script();
-            } catch (SyntaxErrors.TooManyErrors enough) {
-                tree = null;
+                parser.script();
+            } catch (SyntaxErrors.TooManyErrors tooMany) {
+                // The first errors are all anyone reads.
             }
         }
         List<Diagnostic> found = errors.diagnostics();
-        if (found.isEmpty()) return new Parsed(tree, List.of());
-        return new Parsed(null, limit(found));
+        if (!found.isEmpty()) return new Parsed(null, limit(found), assigned);
+        return new Parsed(new Statements(chars, enough), List.of(), assigned);
+    }
+
+    /** The statements of a script known to be free of syntax errors, parsed as they are asked for. */
+    private static final class Statements implements Iterator<CRTParser.StatementContext> {
+        private final CRTParser parser;
+
+        /** {@code mode} is the prediction that sufficed for the whole script in the check. */
+        Statements(CharStream chars, PredictionMode mode) {
+            chars.seek(0);
+            CRTLexer lexer = new CRTLexer(chars);
+            lexer.removeErrorListeners();
+            lexer.setTokenFactory(new SharedTextTokens());
+            // Unbuffered: tokens no longer needed by a statement's tree are garbage once it has run.
+            parser = new CRTParser(new UnbufferedTokenStream<>(lexer));
+            parser.removeErrorListeners();
+            parser.setTrimParseTree(true);
+            parser.getInterpreter().setPredictionMode(mode);
+            parser.setErrorHandler(new BailErrorStrategy());
+        }
+
+        @Override
+        public boolean hasNext() { return parser.getInputStream().LA(1) != Token.EOF; }
+
+        @Override
+        public CRTParser.StatementContext next() { return parser.statement(); }
+    }
+
+    /**
+     * Tokens whose text is set once and shared: names through a table, keywords and operators
+     * from the vocabulary. Evaluating them in loops then neither copies characters nor rehashes.
+     */
+    private static final class SharedTextTokens extends CommonTokenFactory {
+        private final Map<String, String> names = new HashMap<>();
+
+        @Override
+        public CommonToken create(Pair<TokenSource, CharStream> source, int type, String text, int channel,
+                int start, int stop, int line, int charPositionInLine) {
+            CommonToken token = super.create(source, type, text, channel, start, stop, line, charPositionInLine);
+            if (type == CRTLexer.IDENT || type == CRTLexer.NAME) {
+                token.setText(names.computeIfAbsent(token.getText(), n -> n));
+            } else if (type > 0 && type < FIXED_TEXT.length && FIXED_TEXT[type] != null) {
+                token.setText(FIXED_TEXT[type]);
+            }
+            return token;
+        }
     }
 
     private static void reportLexicalMistakes(CommonTokenStream tokens, SyntaxErrors errors) {
-        // Names and operators are fixed on their tokens once, shared, so that evaluating them in loops neither
-        // copies characters again nor rehashes new strings.
-        Map<String, String> names = new HashMap<>();
         for (Token token : tokens.getTokens()) {
-            int type = token.getType();
-            if (type == CRTLexer.IDENT || type == CRTLexer.NAME) {
-                ((CommonToken) token).setText(names.computeIfAbsent(token.getText(), n -> n));
-            } else if (type > 0 && type < FIXED_TEXT.length && FIXED_TEXT[type] != null) {
-                ((CommonToken) token).setText(FIXED_TEXT[type]);
-            }
             if (token.getType() == CRTLexer.UNTERMINATED_STRING) {
                 errors.add(token, "unterminated string (a string ends with \" on the line it starts)");
             } else if (token.getType() == CRTLexer.BAD_CHARACTER) {
                 errors.add(token, "unexpected character " + describeCharacter(token.getText()));
             }
         }
+    }
+
+    /** Names assigned ({@code name =}) or bound as macro parameters ({@code Macro (a, b)}), read off the tokens. */
+    private static Set<String> assignedNames(List<Token> tokens) {
+        Set<String> names = new HashSet<>();
+        List<Token> visible = new ArrayList<>();
+        for (Token t : tokens) if (t.getChannel() == Token.DEFAULT_CHANNEL) visible.add(t);
+        for (int i = 0; i + 1 < visible.size(); i++) {
+            int type = visible.get(i).getType();
+            if (type == CRTLexer.IDENT && visible.get(i + 1).getType() == CRTLexer.ASSIGN) {
+                names.add(visible.get(i).getText());
+            } else if (type == CRTLexer.MACRO && visible.get(i + 1).getType() == CRTLexer.LPAREN) {
+                for (int j = i + 2; j < visible.size() && visible.get(j).getType() != CRTLexer.RPAREN; j++) {
+                    if (visible.get(j).getType() == CRTLexer.IDENT) names.add(visible.get(j).getText());
+                }
+            }
+        }
+        return names;
     }
 
     private static String describeCharacter(String text) {

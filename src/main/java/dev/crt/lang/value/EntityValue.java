@@ -7,18 +7,19 @@ import java.util.ArrayList;
 import java.util.List;
 
 /**
- * An entity with the modifiers applied to it since it was built. The modifiers stay a chain of
- * values, one per modifier, and are folded into the entity's transform only when the entity is
- * placed or combined: a loop that moves a sphere ten million times must not build ten million
- * pairs of matrices.
+ * An entity with the modifiers applied to it since it was built. Each modifier is one small
+ * value linked to the one before, and they are folded into the entity's transform only when the
+ * entity is placed or combined: a loop that moves a sphere ten million times must not build ten
+ * million pairs of matrices (the amount is kept as three doubles for the same reason).
  */
-public record EntityValue(Entity base, ModifierKind kind, Vec3 amount, EntityValue before) implements Value {
+public record EntityValue(Entity base, ModifierKind kind, double x, double y, double z, EntityValue before)
+        implements Value {
     /** The kinds of modifier a script writes inside {@code < >}. */
     public enum ModifierKind { TRANSLATE, ROTATE, SCALE }
 
-    public static EntityValue of(Entity entity) { return new EntityValue(entity, null, null, null); }
+    public static EntityValue of(Entity entity) { return new EntityValue(entity, null, 0, 0, 0, null); }
 
-    public EntityValue modified(ModifierKind k, Vec3 by) { return new EntityValue(base, k, by, this); }
+    public EntityValue modified(ModifierKind k, Vec3 by) { return new EntityValue(base, k, by.x(), by.y(), by.z(), this); }
 
     /** The entity with every modifier applied, in the order written, each about the world origin. */
     public Entity entity() {
@@ -28,10 +29,11 @@ public record EntityValue(Entity base, ModifierKind kind, Vec3 amount, EntityVal
         Transform t = Transform.IDENTITY;
         for (int i = inOrder.size() - 1; i >= 0; i--) {
             EntityValue m = inOrder.get(i);
+            Vec3 amount = new Vec3(m.x, m.y, m.z);
             t = t.then(switch (m.kind) {
-                case TRANSLATE -> Transform.translation(m.amount);
-                case ROTATE -> Transform.rotation(m.amount);
-                case SCALE -> Transform.scaling(m.amount);
+                case TRANSLATE -> Transform.translation(amount);
+                case ROTATE -> Transform.rotation(amount);
+                case SCALE -> Transform.scaling(amount);
             });
         }
         return base.transformed(t);
