@@ -28,8 +28,11 @@ public final class ImageFiles {
         ImageWriter writer = writerFor(out);
         Path target = out.toAbsolutePath();
         Path folder = target.getParent();
-        if (folder == null || !Files.isDirectory(folder)) {
+        if (folder == null || !Files.exists(folder)) {
             throw new IOException("cannot write " + out + ": the folder " + folder + " does not exist");
+        }
+        if (!Files.isDirectory(folder)) {
+            throw new IOException("cannot write " + out + ": " + folder + " is a file, not a folder");
         }
         Path temp = folder.resolve("." + target.getFileName() + ".tmp-"
                 + Long.toHexString(ThreadLocalRandom.current().nextLong() & Long.MAX_VALUE));
@@ -87,7 +90,12 @@ public final class ImageFiles {
     static byte[] encode8(FrameBuffer image, double gamma) {
         float[] data = image.data();
         byte[] bytes = new byte[data.length];
-        for (int i = 0; i < data.length; i++) bytes[i] = (byte) toByte(data[i], gamma);
+        if (gamma == 1) {
+            for (int i = 0; i < data.length; i++) bytes[i] = (byte) toByte(data[i], 1);
+        } else {
+            GammaEncoder encoder = new GammaEncoder(gamma);
+            for (int i = 0; i < data.length; i++) bytes[i] = (byte) encoder.encode(data[i]);
+        }
         return bytes;
     }
 }

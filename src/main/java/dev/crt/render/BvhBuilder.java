@@ -14,18 +14,38 @@ final class BvhBuilder {
     private static final double TRAVERSAL_COST = 1.0;
     private static final double INTERSECTION_COST = 1.5;
 
+    /**
+     * Boxes and centroids by position in {@link #order}; partitioning moves them with their items,
+     * so every pass over a range reads memory in sequence.
+     */
     private final double[] bounds;
     private final double[] centroid;
     /** The item order: leaves refer to ranges of it. */
     final int[] order;
 
-    private BvhBuilder(double[] bounds, int n) {
-        this.bounds = bounds;
+    private BvhBuilder(double[] itemBounds, int n) {
+        bounds = itemBounds.clone();
         centroid = new double[3 * n];
         order = new int[n];
         for (int i = 0; i < n; i++) {
             order[i] = i;
             for (int a = 0; a < 3; a++) centroid[3 * i + a] = 0.5 * (bounds[6 * i + a] + bounds[6 * i + 3 + a]);
+        }
+    }
+
+    private void swap(int i, int j) {
+        int x = order[i];
+        order[i] = order[j];
+        order[j] = x;
+        for (int a = 0; a < 6; a++) {
+            double v = bounds[6 * i + a];
+            bounds[6 * i + a] = bounds[6 * j + a];
+            bounds[6 * j + a] = v;
+        }
+        for (int a = 0; a < 3; a++) {
+            double v = centroid[3 * i + a];
+            centroid[3 * i + a] = centroid[3 * j + a];
+            centroid[3 * j + a] = v;
         }
     }
 
@@ -60,12 +80,11 @@ final class BvhBuilder {
     }
 
     private static final class Node {
-        final double[] box;
+        /** Filled in by {@link #split}. */
+        final double[] box = new double[6];
         Node left, right;
         int first, count;
         int size = 1;
-
-        Node(double[] box) { this.box = box; }
     }
 
     private final class Task extends RecursiveTask<Node> {
@@ -79,7 +98,7 @@ final class BvhBuilder {
 
         @Override
         protected Node compute() {
-            Node node = new Node(rangeBounds(lo, hi));
+            Node node = new Node();
             int mid = split(node, lo, hi);
             if (mid < 0) return node;
             Task left = new Task(lo, mid);
@@ -93,7 +112,7 @@ final class BvhBuilder {
     }
 
     private Node subtree(int lo, int hi) {
-        Node node = new Node(rangeBounds(lo, hi));
+        Node node = new Node();
         int mid = split(node, lo, hi);
         if (mid < 0) return node;
         node.left = subtree(lo, mid);
@@ -102,63 +121,61 @@ final class BvhBuilder {
         return node;
     }
 
-    private double[] rangeBounds(int lo, int hi) {
-        double[] b = {Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY,
-                Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY};
-        for (int i = lo; i < hi; i++) {
-            int k = 6 * order[i];
-            for (int a = 0; a < 3; a++) {
-                b[a] = Math.min(b[a], bounds[k + a]);
-                b[3 + a] = Math.max(b[3 + a], bounds[k + 3 + a]);
-            }
-        }
-        return b;
-    }
-
     /** Partitions [lo, hi) by the best SAH split and returns its middle, or makes {@code node} a leaf and returns −1. */
     private int split(Node node, int lo, int hi) {
         int n = hi - lo;
-        if (n <= 1) return leaf(node, lo, hi);
+        // One pass for the node's box and the bounds of the centroids.
+        double[] box = node.box;
         double[] cmin = {Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY};
         double[] cmax = {Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY};
+        for (int a = 0; a < 3; a++) {
+            box[a] = Double.POSITIVE_INFINITY;
+            box[3 + a] = Double.NEGATIVE_INFINITY;
+        }
         for (int i = lo; i < hi; i++) {
-            int k = 3 * order[i];
             for (int a = 0; a < 3; a++) {
-                cmin[a] = Math.min(cmin[a], centroid[k + a]);
-                cmax[a] = Math.max(cmax[a], centroid[k + a]);
+                box[a] = Math.min(box[a], bounds[6 * i + a]);
+                box[3 + a] = Math.max(box[3 + a], bounds[6 * i + 3 + a]);
+                cmin[a] = Math.min(cmin[a], centroid[3 * i + a]);
+                cmax[a] = Math.max(cmax[a], centroid[3 * i + a]);
             }
         }
+        if (n <= 1) return leaf(node, lo, hi);
         double bestCost = Double.POSITIVE_INFINITY;
         int bestAxis = -1, bestBin = -1;
-        int[] binCount = new int[BINS];
-        double[] binBox = new double[6 * BINS];
-        double[] rightArea = new double[BINS];
+        int[] binCount = new int[3 * BINS];
+        double[] binBox = new double[3 * 6 * BINS];
+        for (int b = 0; b < 3 * BINS; b++) resetBox(binBox, b);
+        double[] scale = new double[3];
         for (int axis = 0; axis < 3; axis++) {
             double extent = cmax[axis] - cmin[axis];
-            if (!(extent > 0)) continue;
-            java.util.Arrays.fill(binCount, 0);
-            for (int b = 0; b < BINS; b++) resetBox(binBox, b);
-            double k = BINS / extent;
-            for (int i = lo; i < hi; i++) {
-                int item = order[i];
-                int b = bin(centroid[3 * item + axis], cmin[axis], k);
+            scale[axis] = extent > 0 ? BINS / extent : 0;
+        }
+        for (int i = lo; i < hi; i++) {
+            for (int axis = 0; axis < 3; axis++) {
+                int b = axis * BINS + bin(centroid[3 * i + axis], cmin[axis], scale[axis]);
                 binCount[b]++;
-                grow(binBox, b, bounds, item);
+                grow(binBox, b, bounds, i);
             }
+        }
+        double[] rightArea = new double[BINS];
+        int[] rightCount = new int[BINS];
+        for (int axis = 0; axis < 3; axis++) {
+            if (scale[axis] == 0) continue;
+            int base = axis * BINS;
             double[] acc = emptyBox();
             int accCount = 0;
-            int[] rightCount = new int[BINS];
             for (int b = BINS - 1; b > 0; b--) {
-                include(acc, binBox, b);
-                accCount += binCount[b];
+                include(acc, binBox, base + b);
+                accCount += binCount[base + b];
                 rightArea[b] = area(acc);
                 rightCount[b] = accCount;
             }
             acc = emptyBox();
             accCount = 0;
             for (int b = 0; b < BINS - 1; b++) {
-                include(acc, binBox, b);
-                accCount += binCount[b];
+                include(acc, binBox, base + b);
+                accCount += binCount[base + b];
                 int right = rightCount[b + 1];
                 if (accCount == 0 || right == 0) continue;
                 double cost = area(acc) * accCount + rightArea[b + 1] * right;
@@ -176,15 +193,13 @@ final class BvhBuilder {
         }
         double splitCost = TRAVERSAL_COST + INTERSECTION_COST * bestCost / parentArea;
         if (n <= MAX_LEAF && (splitCost >= INTERSECTION_COST * n || !(parentArea > 0))) return leaf(node, lo, hi);
-        double k = BINS / (cmax[bestAxis] - cmin[bestAxis]);
+        double k = scale[bestAxis];
         int i = lo, j = hi - 1;
         while (i <= j) {
-            if (bin(centroid[3 * order[i] + bestAxis], cmin[bestAxis], k) <= bestBin) {
+            if (bin(centroid[3 * i + bestAxis], cmin[bestAxis], k) <= bestBin) {
                 i++;
             } else {
-                int x = order[i];
-                order[i] = order[j];
-                order[j] = x;
+                swap(i, j);
                 j--;
             }
         }

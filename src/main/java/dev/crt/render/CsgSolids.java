@@ -35,8 +35,6 @@ final class CsgSolids {
     private int leafSize, programSize;
     int maxLeaves;
 
-    int count() { return count; }
-
     /** Flattens {@code csg} placed by {@code parent}; returns its index and its world bounds in {@code bounds[0]}. */
     int add(Csg csg, Transform parent, Shapes shapes, ToIntFunction<Primitive> materials, Aabb[] bounds) {
         int tree = count++;
@@ -162,61 +160,37 @@ final class CsgSolids {
         return st[0];
     }
 
-    private double tolerance(int tree, Ray ray) {
-        double o = Math.max(Math.abs(ray.ox), Math.max(Math.abs(ray.oy), Math.abs(ray.oz)));
-        return TIE * (o + scale[tree]);
-    }
-
     /**
      * The first boundary of the solid {@code tree} with 0 < t < {@code tMax}: writes it into {@code hit}
      * and returns true, or returns false.
      */
-    boolean closestHit(int tree, Ray ray, double tMax, Shapes shapes, LineSpan span, Scratch sc, Hit hit) {
-        int n = gather(tree, ray, shapes, span, sc);
-        if (n == 0) return false;
-        double tol = tolerance(tree, ray);
-        boolean known = false, state = false;
-        int i = 0;
-        while (i < n) {
-            double t0 = sc.eventT[i];
-            if (t0 >= tMax) return false;
-            if (t0 > 0 && !known) {
-                state = evaluate(tree, sc);
-                known = true;
-            }
-            double limit = t0 + tol + TIE * Math.abs(t0);
-            int shown = i;
-            int j = i;
-            for (; j < n && sc.eventT[j] <= limit; j++) {
-                sc.inside[sc.eventLeaf[j]] ^= true;
-                if (sc.eventLeaf[j] >= sc.eventLeaf[shown]) shown = j;
-            }
-            if (known) {
-                boolean now = evaluate(tree, sc);
-                if (now != state) {
-                    double t = sc.eventT[shown];
-                    if (t >= tMax) return false;
-                    hit.t = t;
-                    hit.shape = leafShape[leafStart[tree] + sc.eventLeaf[shown]];
-                    hit.face = sc.eventFace[shown];
-                    hit.flip = sc.eventEntry[shown] != now;
-                    return true;
-                }
-            }
-            i = j;
-        }
-        return false;
+    boolean closestHit(int tree, Ray ray, double tMax, Shapes shapes, Materials materials, LineSpan span, Scratch sc,
+            Hit hit) {
+        return walk(tree, ray, tMax, hit, shapes, materials, span, sc) != 0;
     }
 
     /**
      * The product of the transparencies of every boundary of the solid crossed with 0 < t < {@code tMax};
      * 0 as soon as an opaque one is crossed.
      */
-    double transmittance(int tree, Ray ray, double tMax, Shapes shapes, Materials materials, LineSpan span,
+    double transmittance(int tree, Ray ray, double tMax, Shapes shapes, Materials materials, LineSpan span, Scratch sc) {
+        return walk(tree, ray, tMax, null, shapes, materials, span, sc);
+    }
+
+    /**
+     * Walks the boundary events of {@code tree} along the ray, applying simultaneous events together.
+     * With a {@code hit} it stops at the first boundary in (0, tMax), fills {@code hit} and returns 1
+     * (0 when there is none); without, it returns the product of kt over the boundaries crossed.
+     * Both walks share this one method on purpose: it is then too large for the JIT to inline into
+     * the BVH loops, which keeps those loops small and quick to compile, while CSG runs as its own
+     * compiled method.
+     */
+    private double walk(int tree, Ray ray, double tMax, Hit hit, Shapes shapes, Materials materials, LineSpan span,
             Scratch sc) {
         int n = gather(tree, ray, shapes, span, sc);
-        if (n == 0) return 1;
-        double tol = tolerance(tree, ray);
+        if (n == 0) return hit == null ? 1 : 0;
+        double o = Math.max(Math.abs(ray.ox), Math.max(Math.abs(ray.oy), Math.abs(ray.oz)));
+        double tol = TIE * (o + scale[tree]);
         boolean known = false, state = false;
         double product = 1;
         int i = 0;
@@ -237,13 +211,21 @@ final class CsgSolids {
             if (known) {
                 boolean now = evaluate(tree, sc);
                 if (now != state && sc.eventT[shown] < tMax) {
-                    product *= materials.transparency(shapes.material[leafShape[leafStart[tree] + sc.eventLeaf[shown]]]);
+                    int shape = leafShape[leafStart[tree] + sc.eventLeaf[shown]];
+                    if (hit != null) {
+                        hit.t = sc.eventT[shown];
+                        hit.shape = shape;
+                        hit.face = sc.eventFace[shown];
+                        hit.flip = sc.eventEntry[shown] != now;
+                        return 1;
+                    }
+                    product *= materials.transparency(shapes.material[shape]);
                     if (product == 0) return 0;
                 }
                 state = now;
             }
             i = j;
         }
-        return product;
+        return hit == null ? product : 0;
     }
 }

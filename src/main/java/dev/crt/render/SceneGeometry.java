@@ -57,12 +57,13 @@ final class SceneGeometry {
             double[] flat = new double[6 * n];
             for (int i = 0; i < n; i++) {
                 Aabb b = boxes.get(i);
-                flat[6 * i] = b.min().x();
-                flat[6 * i + 1] = b.min().y();
-                flat[6 * i + 2] = b.min().z();
-                flat[6 * i + 3] = b.max().x();
-                flat[6 * i + 4] = b.max().y();
-                flat[6 * i + 5] = b.max().z();
+                // Widened by an ulp each way: bounds computed with rounding (c ± r) must not clip the solid.
+                flat[6 * i] = Math.nextDown(b.min().x());
+                flat[6 * i + 1] = Math.nextDown(b.min().y());
+                flat[6 * i + 2] = Math.nextDown(b.min().z());
+                flat[6 * i + 3] = Math.nextUp(b.max().x());
+                flat[6 * i + 4] = Math.nextUp(b.max().y());
+                flat[6 * i + 5] = Math.nextUp(b.max().z());
             }
             bvh = BvhBuilder.build(flat, n, order);
         } else {

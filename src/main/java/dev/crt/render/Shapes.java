@@ -58,6 +58,14 @@ final class Shapes {
             kind[s] = EMPTY;
             return;
         }
+        if (t == Transform.IDENTITY) {
+            Vec3 c = sp.center();
+            double r = sp.radius();
+            kind[s] = SPHERE;
+            push(c.x(), c.y(), c.z(), r, r * r);
+            scale[s] = maxAbs(c) + r;
+            return;
+        }
         double[] m = t.matrix();
         double c0 = m[0] * m[0] + m[4] * m[4] + m[8] * m[8];
         double c1 = m[1] * m[1] + m[5] * m[5] + m[9] * m[9];

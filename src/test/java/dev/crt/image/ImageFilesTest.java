@@ -140,7 +140,7 @@ class ImageFilesTest {
     void unwritableFolderFailsWithoutLeavingFiles() throws IOException {
         Path notAFolder = Files.writeString(dir.resolve("file"), "x");
         assertThatThrownBy(() -> ImageFiles.write(sample(), notAFolder.resolve("a.png"), 1, Map.of()))
-                .isInstanceOf(IOException.class).hasMessageContaining("cannot write");
+                .isInstanceOf(IOException.class).hasMessageContaining("cannot write").hasMessageContaining("not a folder");
         assertThatThrownBy(() -> ImageFiles.write(sample(), dir.resolve("missing/a.ppm"), 1, Map.of()))
                 .isInstanceOf(IOException.class).hasMessageContaining("does not exist");
         try (Stream<Path> files = Files.list(dir)) {
@@ -170,5 +170,24 @@ class ImageFilesTest {
             assertThat(files.toList()).hasSize(1);
         }
         assertThat(List.of(Files.readAllBytes(out)[0], Files.readAllBytes(out)[1])).containsExactly((byte) 'P', (byte) '6');
+    }
+
+    @Test
+    void gammaEncoderGivesExactlyTheFormulasBytes() {
+        java.util.SplittableRandom r = new java.util.SplittableRandom(5);
+        for (double gamma : new double[] {2.2, 1.8, 0.45, 3}) {
+            GammaEncoder e = new GammaEncoder(gamma);
+            for (int k = 0; k < 200_000; k++) {
+                double c = k % 2 == 0 ? r.nextDouble() * 1.2 - 0.1 : r.nextDouble() * r.nextDouble() * r.nextDouble();
+                assertThat(e.encode(c)).isEqualTo(ImageFiles.toByte(c, gamma));
+            }
+            for (int k = 1; k < 256; k++) {
+                // Right at each step, where rounding decides.
+                double step = Math.pow((k - 0.5) / 255, gamma);
+                for (double c : new double[] {Math.nextDown(step), step, Math.nextUp(step), (float) step}) {
+                    assertThat(e.encode(c)).as("gamma %s at step %d", gamma, k).isEqualTo(ImageFiles.toByte(c, gamma));
+                }
+            }
+        }
     }
 }

@@ -139,4 +139,31 @@ class CameraAndBackgroundTest {
         double half = Math.pow((0.5 + 0.055) / 1.055, 2.4);
         assertThat(out).containsExactly(new double[] {half, 0, half}, within(1e-6));
     }
+
+    @Test
+    void thinLensKeepsTheFocusPlaneSharpAndBlursWhatLiesBehind() {
+        dev.crt.scene.Material red = new dev.crt.scene.Material(dev.crt.scene.Rgb.BLACK, 0, 0, 1, 0, 0, 1, rgb(1, 0, 0));
+        dev.crt.scene.Material green = new dev.crt.scene.Material(dev.crt.scene.Rgb.BLACK, 0, 0, 1, 0, 0, 1, rgb(0, 1, 0));
+        Camera lens = new Camera(v(0, 0, -5), Vec3.ZERO, 40, 0, 300, 4.6, ApertureShape.CIRCLE, SourceSpan.NONE);
+        dev.crt.scene.Settings s = new dev.crt.scene.Settings("dof", "", "", "", java.util.List.of(), lens,
+                dev.crt.scene.Background.BLACK, 1, 16, 0, 1, 41, 41);
+        // In focus: the front of the red ball (4.6 from the eye). Far behind: a small green ball.
+        var scene = scene(s, sphere(Vec3.ZERO, 0.4, red), sphere(v(3.2, 0, 15), 0.5, green));
+        dev.crt.image.FrameBuffer fb = Renderer.prepare(scene).render(2, RenderMonitor.NONE);
+        assertThat(fb.get(20, 20, 0)).isEqualTo(1f);
+        int gi = greenColumn(s);
+        assertThat(fb.get(gi, 20, 1)).as("the out-of-focus ball's centre mixes with black").isLessThan(0.9f).isGreaterThan(0.05f);
+        dev.crt.image.FrameBuffer pinhole = Renderer.prepare(scene.withSettings(new dev.crt.scene.Settings("dof", "", "", "",
+                java.util.List.of(), new Camera(v(0, 0, -5), Vec3.ZERO, 40, 0, 0, 4.6, ApertureShape.CIRCLE, SourceSpan.NONE),
+                dev.crt.scene.Background.BLACK, 1, 16, 0, 1, 41, 41))).render(2, RenderMonitor.NONE);
+        assertThat(pinhole.get(gi, 20, 1)).isEqualTo(1f);
+    }
+
+    /** The pixel column through the green ball's centre. */
+    private static int greenColumn(dev.crt.scene.Settings s) {
+        Vec3 d = v(3.2, 0, 20).normalize();
+        double h = Math.tan(Math.toRadians(20));
+        double x = d.x() / d.z() / h;
+        return (int) Math.floor((x + 1) / 2 * s.width());
+    }
 }

@@ -115,7 +115,8 @@ class RobustnessTest {
         };
         long start = System.nanoTime();
         assertThatThrownBy(() -> r.render(2, cancelAfterFirstTile)).isInstanceOf(RenderCancelledException.class);
-        assertThat((System.nanoTime() - start) / 1e9).isLessThan(2.0);
+        // The whole render takes tens of seconds; a cancelled one ends within a tile row (bound generous for a loaded machine).
+        assertThat((System.nanoTime() - start) / 1e9).isLessThan(5.0);
         assertThat(tiles.get()).isLessThan(20);
     }
 
@@ -192,5 +193,15 @@ class RobustnessTest {
         int differ = 0;
         for (int i = 0; i < a.length; i++) if (Math.abs(a[i] - b[i]) > 1.5 / 255) differ++;
         assertThat(differ).isLessThan(a.length / 100);
+    }
+
+    @Test
+    void mirrorsFacingEachOtherSurviveADeepRecursionDepth() {
+        Material mirror = material(rgb(0.5, 0.5, 0.5), 0.1, 0, 30, 0.9, 0, 1);
+        Settings base = settings(camera(v(0, 0, 0), v(0, 0, 1), 20), List.of(point(Vec3.ZERO, Rgb.WHITE, 0, 0.1)),
+                new SolidBackground(rgb(0, 0, 1)), 4, 4);
+        Settings deep = new Settings("deep", "", "", "", base.lights(), base.camera(), base.background(), 1, 1, 200_000, 1, 1, 1);
+        FrameBuffer fb = render(deep, box(v(-5, -5, 2), v(5, 5, 3), mirror), box(v(-5, -5, -3), v(5, 5, -2), mirror));
+        assertThat(fb.get(0, 0, 0)).isPositive();
     }
 }

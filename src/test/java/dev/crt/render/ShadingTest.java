@@ -232,4 +232,15 @@ class ShadingTest {
         }
         assertThat(mixed).as("pixels straddling the silhouette").isGreaterThan(10);
     }
+
+    @Test
+    void wholePhongExponentsBySquaringAgreeWithMathPow() {
+        java.util.SplittableRandom r = new java.util.SplittableRandom(11);
+        for (int k = 0; k < 20000; k++) {
+            double x = r.nextDouble();
+            double n = k % 10 == 0 ? r.nextDouble() * 100 : r.nextInt(0, 300);
+            double expected = Math.pow(x, n);
+            assertThat(Math.abs(Tracer.power(x, n) - expected)).isLessThanOrEqualTo(1e-13 * expected + Double.MIN_NORMAL);
+        }
+    }
 }
