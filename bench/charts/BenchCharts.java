@@ -77,7 +77,7 @@ public final class BenchCharts {
         CategoryChart chart = new CategoryChartBuilder().width(800).height(450)
                 .title(String.format(Locale.ROOT, "Box field, 1280x720: whole-process time, CRT / POV-Ray = %.2f", ratio))
                 .xAxisTitle("").yAxisTitle("seconds (lower is better)").build();
-        chart.getStyler().setLegendPosition(Styler.LegendPosition.InsideNW);
+        chart.getStyler().setLegendPosition(Styler.LegendPosition.InsideNE);
         chart.getStyler().setSeriesColors(new Color[] {CRT, POVRAY});
         chart.getStyler().setLabelsVisible(true);
         chart.getStyler().setDecimalPattern("0.00");
