@@ -27,7 +27,9 @@ class ExampleScenesTest {
         }
         assertThat(scripts).isNotEmpty();
         return scripts.stream().map(p -> DynamicTest.dynamicTest(p.getFileName().toString(), () -> {
-            CompileResult r = CrtCompiler.compile(ScriptFiles.read(p), CompileOptions.DEFAULT.withTime(3));
+            CompileResult r = CrtCompiler.compile(ScriptFiles.read(p),
+                    new CompileOptions(3, List.of(Path.of("assets")), CompileOptions.DEFAULT_LOOP_BUDGET,
+                            CompileOptions.DEFAULT_TIME_BUDGET));
             assertThat(r.hasErrors()).as(r.diagnostics().toString()).isFalse();
             Scene scene = r.scene().withSettings(r.scene().settings().withSize(48, 27).withSampling(1, 1));
             FrameBuffer image = Renderer.prepare(scene).render(0, dev.crt.render.RenderMonitor.NONE);

@@ -4,11 +4,11 @@ import java.io.IOException;
 import javax.imageio.ImageIO;
 
 /**
- * Draws scenes/assets/sky.png: an equirectangular panorama (sky gradient, sun with glow, clouds,
+ * Draws assets/sky.png: an equirectangular panorama (sky gradient, sun with glow, clouds,
  * distant hills and a ground plain) for CRT's {@code Background { image -> ... }}.
  *
  * <pre>
- *   java scenes/assets/SkyGenerator.java scenes/assets/sky.png [WIDTH]     # default 1024 x 512
+ *   java assets/SkyGenerator.java assets/sky.png [WIDTH]     # default 1024 x 512
  * </pre>
  * Deterministic: the same command draws the same picture. The mapping is the one of CRT's
  * rendering model with angle 0: column u looks along azimuth atan2(x, z) = 2π(u − 0.5), so the
