@@ -52,9 +52,19 @@ final class BvhBuilder {
     /** The hierarchy over {@code n} items whose boxes are {@code bounds} (six doubles each); item order in {@code orderOut}. */
     static Bvh build(double[] bounds, int n, int[] orderOut) {
         BvhBuilder b = new BvhBuilder(bounds, n);
-        Node root = n > PARALLEL_THRESHOLD
-                ? ForkJoinPool.commonPool().invoke(b.new Task(0, n))
-                : b.subtree(0, n);
+        Node root;
+        if (n > PARALLEL_THRESHOLD) {
+            // A pool of its own: the common pool leaves one core idle (its parallelism is cores − 1,
+            // and the thread that submits only waits).
+            ForkJoinPool pool = new ForkJoinPool(Runtime.getRuntime().availableProcessors());
+            try {
+                root = pool.invoke(b.new Task(0, n));
+            } finally {
+                pool.shutdown();
+            }
+        } else {
+            root = b.subtree(0, n, new Scratch());
+        }
         System.arraycopy(b.order, 0, orderOut, 0, n);
         int nodes = root.size;
         double[] box = new double[6 * nodes];
@@ -99,38 +109,59 @@ final class BvhBuilder {
         @Override
         protected Node compute() {
             Node node = new Node();
-            int mid = split(node, lo, hi);
+            Scratch sc = new Scratch();
+            int mid = split(node, lo, hi, sc);
             if (mid < 0) return node;
             Task left = new Task(lo, mid);
             Task right = new Task(mid, hi);
             if (mid - lo > PARALLEL_THRESHOLD) left.fork();
-            node.right = hi - mid > PARALLEL_THRESHOLD ? right.compute() : subtree(mid, hi);
-            node.left = mid - lo > PARALLEL_THRESHOLD ? left.join() : subtree(lo, mid);
+            node.right = hi - mid > PARALLEL_THRESHOLD ? right.compute() : subtree(mid, hi, sc);
+            node.left = mid - lo > PARALLEL_THRESHOLD ? left.join() : subtree(lo, mid, sc);
             node.size = 1 + node.left.size + node.right.size;
             return node;
         }
     }
 
-    private Node subtree(int lo, int hi) {
+    private Node subtree(int lo, int hi, Scratch sc) {
         Node node = new Node();
-        int mid = split(node, lo, hi);
+        int mid = split(node, lo, hi, sc);
         if (mid < 0) return node;
-        node.left = subtree(lo, mid);
-        node.right = subtree(mid, hi);
+        node.left = subtree(lo, mid, sc);
+        node.right = subtree(mid, hi, sc);
         node.size = 1 + node.left.size + node.right.size;
         return node;
     }
 
+    /**
+     * Per-thread working space of {@link #split}. The bins are kept empty between splits and only
+     * the bins a split used are emptied again, so a small range does not pay for all of them.
+     */
+    private static final class Scratch {
+        final int[] binCount = new int[3 * BINS];
+        final double[] binBox = new double[3 * 6 * BINS];
+        /** Per axis, a bit per bin that holds at least one item. */
+        final int[] used = new int[3];
+        final double[] rightArea = new double[BINS];
+        final int[] rightCount = new int[BINS];
+        final double[] acc = new double[6];
+        final double[] cmin = new double[3], cmax = new double[3], scale = new double[3];
+
+        Scratch() {
+            for (int b = 0; b < 3 * BINS; b++) resetBox(binBox, b);
+        }
+    }
+
     /** Partitions [lo, hi) by the best SAH split and returns its middle, or makes {@code node} a leaf and returns −1. */
-    private int split(Node node, int lo, int hi) {
+    private int split(Node node, int lo, int hi, Scratch sc) {
         int n = hi - lo;
         // One pass for the node's box and the bounds of the centroids.
         double[] box = node.box;
-        double[] cmin = {Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY};
-        double[] cmax = {Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY};
+        double[] cmin = sc.cmin, cmax = sc.cmax;
         for (int a = 0; a < 3; a++) {
             box[a] = Double.POSITIVE_INFINITY;
             box[3 + a] = Double.NEGATIVE_INFINITY;
+            cmin[a] = Double.POSITIVE_INFINITY;
+            cmax[a] = Double.NEGATIVE_INFINITY;
         }
         for (int i = lo; i < hi; i++) {
             for (int a = 0; a < 3; a++) {
@@ -143,47 +174,66 @@ final class BvhBuilder {
         if (n <= 1) return leaf(node, lo, hi);
         double bestCost = Double.POSITIVE_INFINITY;
         int bestAxis = -1, bestBin = -1;
-        int[] binCount = new int[3 * BINS];
-        double[] binBox = new double[3 * 6 * BINS];
-        for (int b = 0; b < 3 * BINS; b++) resetBox(binBox, b);
-        double[] scale = new double[3];
+        int[] binCount = sc.binCount;
+        double[] binBox = sc.binBox;
+        int[] used = sc.used;
+        double[] scale = sc.scale;
         for (int axis = 0; axis < 3; axis++) {
             double extent = cmax[axis] - cmin[axis];
             scale[axis] = extent > 0 ? BINS / extent : 0;
         }
-        for (int i = lo; i < hi; i++) {
-            for (int axis = 0; axis < 3; axis++) {
-                int b = axis * BINS + bin(centroid[3 * i + axis], cmin[axis], scale[axis]);
-                binCount[b]++;
-                grow(binBox, b, bounds, i);
+        for (int axis = 0; axis < 3; axis++) {
+            // An axis on which all centroids coincide offers no split.
+            if (scale[axis] == 0) continue;
+            double min = cmin[axis], k = scale[axis];
+            int base = axis * BINS, mask = 0;
+            for (int i = lo; i < hi; i++) {
+                int bin = bin(centroid[3 * i + axis], min, k);
+                mask |= 1 << bin;
+                binCount[base + bin]++;
+                grow(binBox, base + bin, bounds, i);
             }
+            used[axis] = mask;
         }
-        double[] rightArea = new double[BINS];
-        int[] rightCount = new int[BINS];
+        // The sweeps visit only the bins in use: an empty bin changes neither a running box nor a
+        // count, so every cost is the one a sweep over all bins computes, and ties resolve alike
+        // (the first candidate of equal cost is kept).
+        double[] rightArea = sc.rightArea;
+        int[] rightCount = sc.rightCount;
+        double[] acc = sc.acc;
         for (int axis = 0; axis < 3; axis++) {
             if (scale[axis] == 0) continue;
-            int base = axis * BINS;
-            double[] acc = emptyBox();
+            int base = axis * BINS, mask = used[axis];
+            resetAcc(acc);
             int accCount = 0;
-            for (int b = BINS - 1; b > 0; b--) {
+            for (int m = mask; m != 0; ) {
+                int b = 31 - Integer.numberOfLeadingZeros(m);
+                m &= ~(1 << b);
                 include(acc, binBox, base + b);
                 accCount += binCount[base + b];
                 rightArea[b] = area(acc);
                 rightCount[b] = accCount;
             }
-            acc = emptyBox();
+            resetAcc(acc);
             accCount = 0;
-            for (int b = 0; b < BINS - 1; b++) {
+            for (int m = mask; ; ) {
+                int b = Integer.numberOfTrailingZeros(m);
+                m &= m - 1;
+                if (m == 0) break;
                 include(acc, binBox, base + b);
                 accCount += binCount[base + b];
-                int right = rightCount[b + 1];
-                if (accCount == 0 || right == 0) continue;
-                double cost = area(acc) * accCount + rightArea[b + 1] * right;
+                int next = Integer.numberOfTrailingZeros(m);
+                double cost = area(acc) * accCount + rightArea[next] * rightCount[next];
                 if (cost < bestCost) {
                     bestCost = cost;
                     bestAxis = axis;
                     bestBin = b;
                 }
+            }
+            for (int m = mask; m != 0; m &= m - 1) {
+                int b = base + Integer.numberOfTrailingZeros(m);
+                binCount[b] = 0;
+                resetBox(binBox, b);
             }
         }
         double parentArea = area(node.box);
@@ -217,9 +267,11 @@ final class BvhBuilder {
         return -1;
     }
 
-    private static double[] emptyBox() {
-        return new double[] {Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY,
-                Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY};
+    private static void resetAcc(double[] acc) {
+        for (int a = 0; a < 3; a++) {
+            acc[a] = Double.POSITIVE_INFINITY;
+            acc[3 + a] = Double.NEGATIVE_INFINITY;
+        }
     }
 
     private static void resetBox(double[] boxes, int b) {
