@@ -9,7 +9,7 @@ import java.util.concurrent.RecursiveTask;
  */
 final class BvhBuilder {
     private static final int BINS = 16;
-    private static final int MAX_LEAF = 4;
+    static final int MAX_LEAF = 4;
     private static final int PARALLEL_THRESHOLD = 10_000;
     private static final double TRAVERSAL_COST = 1.0;
     private static final double INTERSECTION_COST = 1.5;
@@ -27,6 +27,9 @@ final class BvhBuilder {
         bounds = itemBounds.clone();
         centroid = new double[3 * n];
         order = new int[n];
+        childBox = new double[12 * (n - 1)];
+        children = new int[2 * (n - 1)];
+        inner = new boolean[n - 1];
         for (int i = 0; i < n; i++) {
             order[i] = i;
             for (int a = 0; a < 3; a++) centroid[3 * i + a] = 0.5 * (bounds[6 * i + a] + bounds[6 * i + 3 + a]);
@@ -49,87 +52,111 @@ final class BvhBuilder {
         }
     }
 
+    /**
+     * Inner nodes while building, before compaction: the subtree over items [lo, hi) owns slots
+     * [at, at + hi − lo − 1) (a binary tree over m items has at most m − 1 inner nodes), its root
+     * at {@code at}, its left subtree from at + 1 and its right one from at + (mid − lo). Slots
+     * are in depth-first order with gaps where leaves hold several items; subtrees built in
+     * parallel write disjoint slots.
+     */
+    private final double[] childBox;
+    private final int[] children;
+    private final boolean[] inner;
+
     /** The hierarchy over {@code n} items whose boxes are {@code bounds} (six doubles each); item order in {@code orderOut}. */
     static Bvh build(double[] bounds, int n, int[] orderOut) {
+        // More items than a leaf takes, so that the root is an inner node.
+        if (n <= MAX_LEAF || n > (Integer.MAX_VALUE >>> Bvh.LEAF_COUNT_BITS)) throw new IllegalArgumentException("items: " + n);
         BvhBuilder b = new BvhBuilder(bounds, n);
-        Node root;
+        double[] rootBox = new double[6];
+        int root;
         if (n > PARALLEL_THRESHOLD) {
             // A pool of its own: the common pool leaves one core idle (its parallelism is cores − 1,
             // and the thread that submits only waits).
             ForkJoinPool pool = new ForkJoinPool(Runtime.getRuntime().availableProcessors());
             try {
-                root = pool.invoke(b.new Task(0, n));
+                root = pool.invoke(b.new Task(0, n, 0, rootBox, 0));
             } finally {
                 pool.shutdown();
             }
         } else {
-            root = b.subtree(0, n, new Scratch());
+            root = b.subtree(0, n, 0, new Scratch(), rootBox, 0);
         }
         System.arraycopy(b.order, 0, orderOut, 0, n);
-        int nodes = root.size;
-        double[] box = new double[6 * nodes];
-        int[] link = new int[nodes];
-        int[] count = new int[nodes];
-        int[] depth = new int[1];
-        flatten(root, 0, 1, box, link, count, depth);
-        return new Bvh(box, link, count, nodes, depth[0]);
+        if (Bvh.isLeaf(root)) throw new IllegalStateException("a root leaf over " + n + " items");
+        return b.compact(rootBox);
     }
 
-    private static int flatten(Node node, int at, int level, double[] box, int[] link, int[] count, int[] depth) {
-        System.arraycopy(node.box, 0, box, 6 * at, 6);
-        depth[0] = Math.max(depth[0], level);
-        if (node.left == null) {
-            link[at] = node.first;
-            count[at] = node.count;
-            return at + 1;
+    /** Renumbers the inner nodes densely, keeping depth-first order. */
+    private Bvh compact(double[] rootBox) {
+        int slots = inner.length;
+        int[] index = new int[slots];
+        int count = 0;
+        for (int s = 0; s < slots; s++) if (inner[s]) index[s] = count++;
+        double[] box = new double[12 * count];
+        int[] links = new int[2 * count];
+        int[] level = new int[count];
+        level[0] = 1;
+        int depth = 0;
+        for (int s = 0; s < slots; s++) {
+            if (!inner[s]) continue;
+            int k = index[s];
+            System.arraycopy(childBox, 12 * s, box, 12 * k, 12);
+            for (int c = 0; c < 2; c++) {
+                int child = children[2 * s + c];
+                if (Bvh.isLeaf(child)) {
+                    depth = Math.max(depth, level[k] + 1);
+                } else {
+                    child = index[child];
+                    // Depth-first order: a parent comes before its children.
+                    level[child] = level[k] + 1;
+                }
+                links[2 * k + c] = child;
+            }
         }
-        int right = flatten(node.left, at + 1, level + 1, box, link, count, depth);
-        link[at] = right;
-        count[at] = 0;
-        return flatten(node.right, right, level + 1, box, link, count, depth);
+        return new Bvh(box, links, rootBox, 2 * count + 1, depth);
     }
 
-    private static final class Node {
-        /** Filled in by {@link #split}. */
-        final double[] box = new double[6];
-        Node left, right;
-        int first, count;
-        int size = 1;
-    }
-
-    private final class Task extends RecursiveTask<Node> {
+    private final class Task extends RecursiveTask<Integer> {
         private static final long serialVersionUID = 1L;
-        private final int lo, hi;
+        private final int lo, hi, at;
+        private final double[] boxOut;
+        private final int boxAt;
 
-        Task(int lo, int hi) {
+        Task(int lo, int hi, int at, double[] boxOut, int boxAt) {
             this.lo = lo;
             this.hi = hi;
+            this.at = at;
+            this.boxOut = boxOut;
+            this.boxAt = boxAt;
         }
 
         @Override
-        protected Node compute() {
-            Node node = new Node();
+        protected Integer compute() {
             Scratch sc = new Scratch();
-            int mid = split(node, lo, hi, sc);
-            if (mid < 0) return node;
-            Task left = new Task(lo, mid);
-            Task right = new Task(mid, hi);
+            int mid = split(lo, hi, sc, boxOut, boxAt);
+            if (mid < 0) return Bvh.leaf(lo, hi - lo);
+            inner[at] = true;
+            int leftAt = at + 1, rightAt = at + (mid - lo);
+            Task left = new Task(lo, mid, leftAt, childBox, 12 * at);
+            Task right = new Task(mid, hi, rightAt, childBox, 12 * at + 6);
             if (mid - lo > PARALLEL_THRESHOLD) left.fork();
-            node.right = hi - mid > PARALLEL_THRESHOLD ? right.compute() : subtree(mid, hi, sc);
-            node.left = mid - lo > PARALLEL_THRESHOLD ? left.join() : subtree(lo, mid, sc);
-            node.size = 1 + node.left.size + node.right.size;
-            return node;
+            children[2 * at + 1] = hi - mid > PARALLEL_THRESHOLD ? right.compute()
+                    : subtree(mid, hi, rightAt, sc, childBox, 12 * at + 6);
+            children[2 * at] = mid - lo > PARALLEL_THRESHOLD ? left.join()
+                    : subtree(lo, mid, leftAt, sc, childBox, 12 * at);
+            return at;
         }
     }
 
-    private Node subtree(int lo, int hi, Scratch sc) {
-        Node node = new Node();
-        int mid = split(node, lo, hi, sc);
-        if (mid < 0) return node;
-        node.left = subtree(lo, mid, sc);
-        node.right = subtree(mid, hi, sc);
-        node.size = 1 + node.left.size + node.right.size;
-        return node;
+    /** Builds the subtree over [lo, hi) from slot {@code at}, its box into {@code boxOut}; returns its root (a slot or a leaf). */
+    private int subtree(int lo, int hi, int at, Scratch sc, double[] boxOut, int boxAt) {
+        int mid = split(lo, hi, sc, boxOut, boxAt);
+        if (mid < 0) return Bvh.leaf(lo, hi - lo);
+        inner[at] = true;
+        children[2 * at] = subtree(lo, mid, at + 1, sc, childBox, 12 * at);
+        children[2 * at + 1] = subtree(mid, hi, at + (mid - lo), sc, childBox, 12 * at + 6);
+        return at;
     }
 
     /**
@@ -151,27 +178,39 @@ final class BvhBuilder {
         }
     }
 
-    /** Partitions [lo, hi) by the best SAH split and returns its middle, or makes {@code node} a leaf and returns −1. */
-    private int split(Node node, int lo, int hi, Scratch sc) {
+    /**
+     * Writes the box of [lo, hi) into {@code box} at {@code at}, then partitions the range by the
+     * best SAH split and returns its middle, or returns −1 when the range is a leaf.
+     */
+    private int split(int lo, int hi, Scratch sc, double[] box, int at) {
         int n = hi - lo;
         // One pass for the node's box and the bounds of the centroids.
-        double[] box = node.box;
         double[] cmin = sc.cmin, cmax = sc.cmax;
+        double minX = Double.POSITIVE_INFINITY, minY = Double.POSITIVE_INFINITY, minZ = Double.POSITIVE_INFINITY;
+        double maxX = Double.NEGATIVE_INFINITY, maxY = Double.NEGATIVE_INFINITY, maxZ = Double.NEGATIVE_INFINITY;
         for (int a = 0; a < 3; a++) {
-            box[a] = Double.POSITIVE_INFINITY;
-            box[3 + a] = Double.NEGATIVE_INFINITY;
             cmin[a] = Double.POSITIVE_INFINITY;
             cmax[a] = Double.NEGATIVE_INFINITY;
         }
         for (int i = lo; i < hi; i++) {
+            minX = Math.min(minX, bounds[6 * i]);
+            minY = Math.min(minY, bounds[6 * i + 1]);
+            minZ = Math.min(minZ, bounds[6 * i + 2]);
+            maxX = Math.max(maxX, bounds[6 * i + 3]);
+            maxY = Math.max(maxY, bounds[6 * i + 4]);
+            maxZ = Math.max(maxZ, bounds[6 * i + 5]);
             for (int a = 0; a < 3; a++) {
-                box[a] = Math.min(box[a], bounds[6 * i + a]);
-                box[3 + a] = Math.max(box[3 + a], bounds[6 * i + 3 + a]);
                 cmin[a] = Math.min(cmin[a], centroid[3 * i + a]);
                 cmax[a] = Math.max(cmax[a], centroid[3 * i + a]);
             }
         }
-        if (n <= 1) return leaf(node, lo, hi);
+        box[at] = minX;
+        box[at + 1] = minY;
+        box[at + 2] = minZ;
+        box[at + 3] = maxX;
+        box[at + 4] = maxY;
+        box[at + 5] = maxZ;
+        if (n <= 1) return -1;
         double bestCost = Double.POSITIVE_INFINITY;
         int bestAxis = -1, bestBin = -1;
         int[] binCount = sc.binCount;
@@ -236,13 +275,13 @@ final class BvhBuilder {
                 resetBox(binBox, b);
             }
         }
-        double parentArea = area(node.box);
+        double parentArea = area(minX, minY, minZ, maxX, maxY, maxZ);
         if (bestAxis < 0) {
             // All centroids coincide: split the range in the middle if it is too big for a leaf.
-            return n <= MAX_LEAF ? leaf(node, lo, hi) : lo + n / 2;
+            return n <= MAX_LEAF ? -1 : lo + n / 2;
         }
         double splitCost = TRAVERSAL_COST + INTERSECTION_COST * bestCost / parentArea;
-        if (n <= MAX_LEAF && (splitCost >= INTERSECTION_COST * n || !(parentArea > 0))) return leaf(node, lo, hi);
+        if (n <= MAX_LEAF && (splitCost >= INTERSECTION_COST * n || !(parentArea > 0))) return -1;
         double k = scale[bestAxis];
         int i = lo, j = hi - 1;
         while (i <= j) {
@@ -259,12 +298,6 @@ final class BvhBuilder {
     private static int bin(double c, double min, double k) {
         int b = (int) ((c - min) * k);
         return b < 0 ? 0 : Math.min(b, BINS - 1);
-    }
-
-    private int leaf(Node node, int lo, int hi) {
-        node.first = lo;
-        node.count = hi - lo;
-        return -1;
     }
 
     private static void resetAcc(double[] acc) {
@@ -296,7 +329,11 @@ final class BvhBuilder {
     }
 
     private static double area(double[] b) {
-        double x = b[3] - b[0], y = b[4] - b[1], z = b[5] - b[2];
+        return area(b[0], b[1], b[2], b[3], b[4], b[5]);
+    }
+
+    private static double area(double minX, double minY, double minZ, double maxX, double maxY, double maxZ) {
+        double x = maxX - minX, y = maxY - minY, z = maxZ - minZ;
         if (!(x >= 0 && y >= 0 && z >= 0)) return 0;
         return x * y + y * z + z * x;
     }
