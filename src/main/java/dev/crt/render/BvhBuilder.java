@@ -9,7 +9,7 @@ import java.util.concurrent.RecursiveTask;
  */
 final class BvhBuilder {
     private static final int BINS = 16;
-    private static final int MAX_LEAF = 4;
+    static final int MAX_LEAF = 4;
     private static final int PARALLEL_THRESHOLD = 10_000;
     private static final double TRAVERSAL_COST = 1.0;
     private static final double INTERSECTION_COST = 1.5;
@@ -27,6 +27,9 @@ final class BvhBuilder {
         bounds = itemBounds.clone();
         centroid = new double[3 * n];
         order = new int[n];
+        childBox = new double[12 * (n - 1)];
+        children = new int[2 * (n - 1)];
+        inner = new boolean[n - 1];
         for (int i = 0; i < n; i++) {
             order[i] = i;
             for (int a = 0; a < 3; a++) centroid[3 * i + a] = 0.5 * (bounds[6 * i + a] + bounds[6 * i + 3 + a]);
@@ -49,150 +52,236 @@ final class BvhBuilder {
         }
     }
 
+    /**
+     * Inner nodes while building, before compaction: the subtree over items [lo, hi) owns slots
+     * [at, at + hi − lo − 1) (a binary tree over m items has at most m − 1 inner nodes), its root
+     * at {@code at}, its left subtree from at + 1 and its right one from at + (mid − lo). Slots
+     * are in depth-first order with gaps where leaves hold several items; subtrees built in
+     * parallel write disjoint slots.
+     */
+    private final double[] childBox;
+    private final int[] children;
+    private final boolean[] inner;
+
     /** The hierarchy over {@code n} items whose boxes are {@code bounds} (six doubles each); item order in {@code orderOut}. */
     static Bvh build(double[] bounds, int n, int[] orderOut) {
+        // More items than a leaf takes, so that the root is an inner node.
+        if (n <= MAX_LEAF || n > (Integer.MAX_VALUE >>> Bvh.LEAF_COUNT_BITS)) throw new IllegalArgumentException("items: " + n);
         BvhBuilder b = new BvhBuilder(bounds, n);
-        Node root = n > PARALLEL_THRESHOLD
-                ? ForkJoinPool.commonPool().invoke(b.new Task(0, n))
-                : b.subtree(0, n);
-        System.arraycopy(b.order, 0, orderOut, 0, n);
-        int nodes = root.size;
-        double[] box = new double[6 * nodes];
-        int[] link = new int[nodes];
-        int[] count = new int[nodes];
-        int[] depth = new int[1];
-        flatten(root, 0, 1, box, link, count, depth);
-        return new Bvh(box, link, count, nodes, depth[0]);
-    }
-
-    private static int flatten(Node node, int at, int level, double[] box, int[] link, int[] count, int[] depth) {
-        System.arraycopy(node.box, 0, box, 6 * at, 6);
-        depth[0] = Math.max(depth[0], level);
-        if (node.left == null) {
-            link[at] = node.first;
-            count[at] = node.count;
-            return at + 1;
+        double[] rootBox = new double[6];
+        int root;
+        if (n > PARALLEL_THRESHOLD) {
+            // A pool of its own: the common pool leaves one core idle (its parallelism is cores − 1,
+            // and the thread that submits only waits).
+            ForkJoinPool pool = new ForkJoinPool(Runtime.getRuntime().availableProcessors());
+            try {
+                root = pool.invoke(b.new Task(0, n, 0, rootBox, 0));
+            } finally {
+                pool.shutdown();
+            }
+        } else {
+            root = b.subtree(0, n, 0, new Scratch(), rootBox, 0);
         }
-        int right = flatten(node.left, at + 1, level + 1, box, link, count, depth);
-        link[at] = right;
-        count[at] = 0;
-        return flatten(node.right, right, level + 1, box, link, count, depth);
+        System.arraycopy(b.order, 0, orderOut, 0, n);
+        if (Bvh.isLeaf(root)) throw new IllegalStateException("a root leaf over " + n + " items");
+        return b.compact(rootBox);
     }
 
-    private static final class Node {
-        /** Filled in by {@link #split}. */
-        final double[] box = new double[6];
-        Node left, right;
-        int first, count;
-        int size = 1;
+    /** Renumbers the inner nodes densely, keeping depth-first order. */
+    private Bvh compact(double[] rootBox) {
+        int slots = inner.length;
+        int[] index = new int[slots];
+        int count = 0;
+        for (int s = 0; s < slots; s++) if (inner[s]) index[s] = count++;
+        double[] box = new double[12 * count];
+        int[] links = new int[2 * count];
+        int[] level = new int[count];
+        level[0] = 1;
+        int depth = 0;
+        for (int s = 0; s < slots; s++) {
+            if (!inner[s]) continue;
+            int k = index[s];
+            System.arraycopy(childBox, 12 * s, box, 12 * k, 12);
+            for (int c = 0; c < 2; c++) {
+                int child = children[2 * s + c];
+                if (Bvh.isLeaf(child)) {
+                    depth = Math.max(depth, level[k] + 1);
+                } else {
+                    child = index[child];
+                    // Depth-first order: a parent comes before its children.
+                    level[child] = level[k] + 1;
+                }
+                links[2 * k + c] = child;
+            }
+        }
+        return new Bvh(box, links, rootBox, 2 * count + 1, depth);
     }
 
-    private final class Task extends RecursiveTask<Node> {
+    private final class Task extends RecursiveTask<Integer> {
         private static final long serialVersionUID = 1L;
-        private final int lo, hi;
+        private final int lo, hi, at;
+        private final double[] boxOut;
+        private final int boxAt;
 
-        Task(int lo, int hi) {
+        Task(int lo, int hi, int at, double[] boxOut, int boxAt) {
             this.lo = lo;
             this.hi = hi;
+            this.at = at;
+            this.boxOut = boxOut;
+            this.boxAt = boxAt;
         }
 
         @Override
-        protected Node compute() {
-            Node node = new Node();
-            int mid = split(node, lo, hi);
-            if (mid < 0) return node;
-            Task left = new Task(lo, mid);
-            Task right = new Task(mid, hi);
+        protected Integer compute() {
+            Scratch sc = new Scratch();
+            int mid = split(lo, hi, sc, boxOut, boxAt);
+            if (mid < 0) return Bvh.leaf(lo, hi - lo);
+            inner[at] = true;
+            int leftAt = at + 1, rightAt = at + (mid - lo);
+            Task left = new Task(lo, mid, leftAt, childBox, 12 * at);
+            Task right = new Task(mid, hi, rightAt, childBox, 12 * at + 6);
             if (mid - lo > PARALLEL_THRESHOLD) left.fork();
-            node.right = hi - mid > PARALLEL_THRESHOLD ? right.compute() : subtree(mid, hi);
-            node.left = mid - lo > PARALLEL_THRESHOLD ? left.join() : subtree(lo, mid);
-            node.size = 1 + node.left.size + node.right.size;
-            return node;
+            children[2 * at + 1] = hi - mid > PARALLEL_THRESHOLD ? right.compute()
+                    : subtree(mid, hi, rightAt, sc, childBox, 12 * at + 6);
+            children[2 * at] = mid - lo > PARALLEL_THRESHOLD ? left.join()
+                    : subtree(lo, mid, leftAt, sc, childBox, 12 * at);
+            return at;
         }
     }
 
-    private Node subtree(int lo, int hi) {
-        Node node = new Node();
-        int mid = split(node, lo, hi);
-        if (mid < 0) return node;
-        node.left = subtree(lo, mid);
-        node.right = subtree(mid, hi);
-        node.size = 1 + node.left.size + node.right.size;
-        return node;
+    /** Builds the subtree over [lo, hi) from slot {@code at}, its box into {@code boxOut}; returns its root (a slot or a leaf). */
+    private int subtree(int lo, int hi, int at, Scratch sc, double[] boxOut, int boxAt) {
+        int mid = split(lo, hi, sc, boxOut, boxAt);
+        if (mid < 0) return Bvh.leaf(lo, hi - lo);
+        inner[at] = true;
+        children[2 * at] = subtree(lo, mid, at + 1, sc, childBox, 12 * at);
+        children[2 * at + 1] = subtree(mid, hi, at + (mid - lo), sc, childBox, 12 * at + 6);
+        return at;
     }
 
-    /** Partitions [lo, hi) by the best SAH split and returns its middle, or makes {@code node} a leaf and returns −1. */
-    private int split(Node node, int lo, int hi) {
+    /**
+     * Per-thread working space of {@link #split}. The bins are kept empty between splits and only
+     * the bins a split used are emptied again, so a small range does not pay for all of them.
+     */
+    private static final class Scratch {
+        final int[] binCount = new int[3 * BINS];
+        final double[] binBox = new double[3 * 6 * BINS];
+        /** Per axis, a bit per bin that holds at least one item. */
+        final int[] used = new int[3];
+        final double[] rightArea = new double[BINS];
+        final int[] rightCount = new int[BINS];
+        final double[] acc = new double[6];
+        final double[] cmin = new double[3], cmax = new double[3], scale = new double[3];
+
+        Scratch() {
+            for (int b = 0; b < 3 * BINS; b++) resetBox(binBox, b);
+        }
+    }
+
+    /**
+     * Writes the box of [lo, hi) into {@code box} at {@code at}, then partitions the range by the
+     * best SAH split and returns its middle, or returns −1 when the range is a leaf.
+     */
+    private int split(int lo, int hi, Scratch sc, double[] box, int at) {
         int n = hi - lo;
         // One pass for the node's box and the bounds of the centroids.
-        double[] box = node.box;
-        double[] cmin = {Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY};
-        double[] cmax = {Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY};
+        double[] cmin = sc.cmin, cmax = sc.cmax;
+        double minX = Double.POSITIVE_INFINITY, minY = Double.POSITIVE_INFINITY, minZ = Double.POSITIVE_INFINITY;
+        double maxX = Double.NEGATIVE_INFINITY, maxY = Double.NEGATIVE_INFINITY, maxZ = Double.NEGATIVE_INFINITY;
         for (int a = 0; a < 3; a++) {
-            box[a] = Double.POSITIVE_INFINITY;
-            box[3 + a] = Double.NEGATIVE_INFINITY;
+            cmin[a] = Double.POSITIVE_INFINITY;
+            cmax[a] = Double.NEGATIVE_INFINITY;
         }
         for (int i = lo; i < hi; i++) {
+            minX = Math.min(minX, bounds[6 * i]);
+            minY = Math.min(minY, bounds[6 * i + 1]);
+            minZ = Math.min(minZ, bounds[6 * i + 2]);
+            maxX = Math.max(maxX, bounds[6 * i + 3]);
+            maxY = Math.max(maxY, bounds[6 * i + 4]);
+            maxZ = Math.max(maxZ, bounds[6 * i + 5]);
             for (int a = 0; a < 3; a++) {
-                box[a] = Math.min(box[a], bounds[6 * i + a]);
-                box[3 + a] = Math.max(box[3 + a], bounds[6 * i + 3 + a]);
                 cmin[a] = Math.min(cmin[a], centroid[3 * i + a]);
                 cmax[a] = Math.max(cmax[a], centroid[3 * i + a]);
             }
         }
-        if (n <= 1) return leaf(node, lo, hi);
+        box[at] = minX;
+        box[at + 1] = minY;
+        box[at + 2] = minZ;
+        box[at + 3] = maxX;
+        box[at + 4] = maxY;
+        box[at + 5] = maxZ;
+        if (n <= 1) return -1;
         double bestCost = Double.POSITIVE_INFINITY;
         int bestAxis = -1, bestBin = -1;
-        int[] binCount = new int[3 * BINS];
-        double[] binBox = new double[3 * 6 * BINS];
-        for (int b = 0; b < 3 * BINS; b++) resetBox(binBox, b);
-        double[] scale = new double[3];
+        int[] binCount = sc.binCount;
+        double[] binBox = sc.binBox;
+        int[] used = sc.used;
+        double[] scale = sc.scale;
         for (int axis = 0; axis < 3; axis++) {
             double extent = cmax[axis] - cmin[axis];
             scale[axis] = extent > 0 ? BINS / extent : 0;
         }
-        for (int i = lo; i < hi; i++) {
-            for (int axis = 0; axis < 3; axis++) {
-                int b = axis * BINS + bin(centroid[3 * i + axis], cmin[axis], scale[axis]);
-                binCount[b]++;
-                grow(binBox, b, bounds, i);
+        for (int axis = 0; axis < 3; axis++) {
+            // An axis on which all centroids coincide offers no split.
+            if (scale[axis] == 0) continue;
+            double min = cmin[axis], k = scale[axis];
+            int base = axis * BINS, mask = 0;
+            for (int i = lo; i < hi; i++) {
+                int bin = bin(centroid[3 * i + axis], min, k);
+                mask |= 1 << bin;
+                binCount[base + bin]++;
+                grow(binBox, base + bin, bounds, i);
             }
+            used[axis] = mask;
         }
-        double[] rightArea = new double[BINS];
-        int[] rightCount = new int[BINS];
+        // The sweeps visit only the bins in use: an empty bin changes neither a running box nor a
+        // count, so every cost is the one a sweep over all bins computes, and ties resolve alike
+        // (the first candidate of equal cost is kept).
+        double[] rightArea = sc.rightArea;
+        int[] rightCount = sc.rightCount;
+        double[] acc = sc.acc;
         for (int axis = 0; axis < 3; axis++) {
             if (scale[axis] == 0) continue;
-            int base = axis * BINS;
-            double[] acc = emptyBox();
+            int base = axis * BINS, mask = used[axis];
+            resetAcc(acc);
             int accCount = 0;
-            for (int b = BINS - 1; b > 0; b--) {
+            for (int m = mask; m != 0; ) {
+                int b = 31 - Integer.numberOfLeadingZeros(m);
+                m &= ~(1 << b);
                 include(acc, binBox, base + b);
                 accCount += binCount[base + b];
                 rightArea[b] = area(acc);
                 rightCount[b] = accCount;
             }
-            acc = emptyBox();
+            resetAcc(acc);
             accCount = 0;
-            for (int b = 0; b < BINS - 1; b++) {
+            for (int m = mask; ; ) {
+                int b = Integer.numberOfTrailingZeros(m);
+                m &= m - 1;
+                if (m == 0) break;
                 include(acc, binBox, base + b);
                 accCount += binCount[base + b];
-                int right = rightCount[b + 1];
-                if (accCount == 0 || right == 0) continue;
-                double cost = area(acc) * accCount + rightArea[b + 1] * right;
+                int next = Integer.numberOfTrailingZeros(m);
+                double cost = area(acc) * accCount + rightArea[next] * rightCount[next];
                 if (cost < bestCost) {
                     bestCost = cost;
                     bestAxis = axis;
                     bestBin = b;
                 }
             }
+            for (int m = mask; m != 0; m &= m - 1) {
+                int b = base + Integer.numberOfTrailingZeros(m);
+                binCount[b] = 0;
+                resetBox(binBox, b);
+            }
         }
-        double parentArea = area(node.box);
+        double parentArea = area(minX, minY, minZ, maxX, maxY, maxZ);
         if (bestAxis < 0) {
             // All centroids coincide: split the range in the middle if it is too big for a leaf.
-            return n <= MAX_LEAF ? leaf(node, lo, hi) : lo + n / 2;
+            return n <= MAX_LEAF ? -1 : lo + n / 2;
         }
         double splitCost = TRAVERSAL_COST + INTERSECTION_COST * bestCost / parentArea;
-        if (n <= MAX_LEAF && (splitCost >= INTERSECTION_COST * n || !(parentArea > 0))) return leaf(node, lo, hi);
+        if (n <= MAX_LEAF && (splitCost >= INTERSECTION_COST * n || !(parentArea > 0))) return -1;
         double k = scale[bestAxis];
         int i = lo, j = hi - 1;
         while (i <= j) {
@@ -211,15 +300,11 @@ final class BvhBuilder {
         return b < 0 ? 0 : Math.min(b, BINS - 1);
     }
 
-    private int leaf(Node node, int lo, int hi) {
-        node.first = lo;
-        node.count = hi - lo;
-        return -1;
-    }
-
-    private static double[] emptyBox() {
-        return new double[] {Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY,
-                Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY};
+    private static void resetAcc(double[] acc) {
+        for (int a = 0; a < 3; a++) {
+            acc[a] = Double.POSITIVE_INFINITY;
+            acc[3 + a] = Double.NEGATIVE_INFINITY;
+        }
     }
 
     private static void resetBox(double[] boxes, int b) {
@@ -244,7 +329,11 @@ final class BvhBuilder {
     }
 
     private static double area(double[] b) {
-        double x = b[3] - b[0], y = b[4] - b[1], z = b[5] - b[2];
+        return area(b[0], b[1], b[2], b[3], b[4], b[5]);
+    }
+
+    private static double area(double minX, double minY, double minZ, double maxX, double maxY, double maxZ) {
+        double x = maxX - minX, y = maxY - minY, z = maxZ - minZ;
         if (!(x >= 0 && y >= 0 && z >= 0)) return 0;
         return x * y + y * z + z * x;
     }

@@ -6,6 +6,7 @@ import dev.crt.scene.Csg;
 import dev.crt.scene.Entity;
 import dev.crt.scene.Primitive;
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.List;
 
 /**
@@ -27,36 +28,38 @@ final class SceneGeometry {
     final Bvh bvh;
 
     SceneGeometry(List<Entity> entities) {
-        // First pass: bounds of every entity, to build the hierarchy.
-        Shapes probeShapes = new Shapes();
+        // First pass, in the scene's order: every primitive flattened with its material (kept, to
+        // be copied in the second pass), and the bounds of every entity, to build the hierarchy.
+        Shapes firstShapes = new Shapes();
         CsgSolids probeCsg = new CsgSolids();
         Materials probeMaterials = new Materials();
         List<Entity> bounded = new ArrayList<>();
         List<Entity> infinite = new ArrayList<>();
-        List<Aabb> boxes = new ArrayList<>();
+        // Per bounded or unbounded entity, its index in firstShapes, or −1 for a CSG tree.
+        int[] boundedShape = new int[16];
+        List<Integer> infiniteShape = new ArrayList<>();
+        double[] flat = new double[6 * 16];
         Aabb[] out = new Aabb[1];
         for (Entity e : entities) {
             Aabb b;
+            int s = -1;
             if (e instanceof Primitive p) {
-                b = probeShapes.bounds(probeShapes.add(p, p.transform(), 0));
+                s = firstShapes.add(p, p.transform(), 0);
+                b = firstShapes.bounds(s);
             } else {
-                probeCsg.add((Csg) e, Transform.IDENTITY, probeShapes, q -> probeMaterials.indexOf(q.material()), out);
+                probeCsg.add((Csg) e, Transform.IDENTITY, firstShapes, q -> probeMaterials.indexOf(q.material()), out);
                 b = out[0];
             }
             if (b.isEmpty()) continue;
+            if (s >= 0) firstShapes.material[s] = materials.indexOf(((Primitive) e).material());
             if (b.isFinite()) {
+                int i = bounded.size();
                 bounded.add(e);
-                boxes.add(b);
-            } else {
-                infinite.add(e);
-            }
-        }
-        int n = bounded.size();
-        int[] order = new int[n];
-        if (n > LINEAR_LIMIT) {
-            double[] flat = new double[6 * n];
-            for (int i = 0; i < n; i++) {
-                Aabb b = boxes.get(i);
+                if (i == boundedShape.length) {
+                    boundedShape = Arrays.copyOf(boundedShape, 2 * i);
+                    flat = Arrays.copyOf(flat, 12 * i);
+                }
+                boundedShape[i] = s;
                 // Widened by an ulp each way: bounds computed with rounding (c ± r) must not clip the solid.
                 flat[6 * i] = Math.nextDown(b.min().x());
                 flat[6 * i + 1] = Math.nextDown(b.min().y());
@@ -64,21 +67,30 @@ final class SceneGeometry {
                 flat[6 * i + 3] = Math.nextUp(b.max().x());
                 flat[6 * i + 4] = Math.nextUp(b.max().y());
                 flat[6 * i + 5] = Math.nextUp(b.max().z());
+            } else {
+                infinite.add(e);
+                infiniteShape.add(s);
             }
+        }
+        int n = bounded.size();
+        int[] order = new int[n];
+        if (n > LINEAR_LIMIT) {
             bvh = BvhBuilder.build(flat, n, order);
         } else {
             for (int i = 0; i < n; i++) order[i] = i;
             bvh = null;
         }
-        // Second pass: the flat data, laid out in traversal order for locality.
+        // Second pass: the flat data, laid out in traversal order for locality. A primitive is
+        // copied from the first pass rather than flattened again, which would visit the scene's
+        // objects in a scattered order.
         items = new int[n];
-        for (int i = 0; i < n; i++) items[i] = place(bounded.get(order[i]), out);
+        for (int i = 0; i < n; i++) items[i] = place(bounded.get(order[i]), boundedShape[order[i]], firstShapes, out);
         unbounded = new int[infinite.size()];
-        for (int i = 0; i < unbounded.length; i++) unbounded[i] = place(infinite.get(i), out);
+        for (int i = 0; i < unbounded.length; i++) unbounded[i] = place(infinite.get(i), infiniteShape.get(i), firstShapes, out);
     }
 
-    private int place(Entity e, Aabb[] out) {
-        if (e instanceof Primitive p) return shapes.add(p, p.transform(), materials.indexOf(p.material()));
+    private int place(Entity e, int first, Shapes firstShapes, Aabb[] out) {
+        if (first >= 0) return shapes.copy(firstShapes, first);
         return -(csg.add((Csg) e, Transform.IDENTITY, shapes, q -> materials.indexOf(q.material()), out) + 1);
     }
 }

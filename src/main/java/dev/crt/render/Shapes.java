@@ -37,6 +37,31 @@ final class Shapes {
 
     /** Appends {@code p} placed by {@code toWorld}, returns its index. */
     int add(Primitive p, Transform toWorld, int materialIndex) {
+        int s = next();
+        material[s] = materialIndex;
+        offset[s] = dataSize;
+        if (p instanceof Sphere sp) addSphere(s, sp, toWorld);
+        else if (p instanceof Box b) addBox(s, b, toWorld);
+        else addPlane(s, (Plane) p, toWorld);
+        return s;
+    }
+
+    /** Appends a copy of shape {@code s} of {@code from}, its material index included; returns its index. */
+    int copy(Shapes from, int s) {
+        int t = next();
+        kind[t] = from.kind[s];
+        material[t] = from.material[s];
+        scale[t] = from.scale[s];
+        offset[t] = dataSize;
+        int start = from.offset[s], end = s + 1 < from.count ? from.offset[s + 1] : from.dataSize;
+        int length = end - start;
+        if (dataSize + length > data.length) data = Arrays.copyOf(data, Math.max(data.length * 2, dataSize + length));
+        System.arraycopy(from.data, start, data, dataSize, length);
+        dataSize += length;
+        return t;
+    }
+
+    private int next() {
         int s = count++;
         if (s == kind.length) {
             int n = s * 2;
@@ -45,11 +70,6 @@ final class Shapes {
             material = Arrays.copyOf(material, n);
             scale = Arrays.copyOf(scale, n);
         }
-        material[s] = materialIndex;
-        offset[s] = dataSize;
-        if (p instanceof Sphere sp) addSphere(s, sp, toWorld);
-        else if (p instanceof Box b) addBox(s, b, toWorld);
-        else addPlane(s, (Plane) p, toWorld);
         return s;
     }
 

@@ -29,6 +29,8 @@ final class Tracer {
     private final int[] items;
     private final int[] unbounded;
     private final Bvh bvh;
+    private final double[] boxes;
+    private final int[] children;
     private final Lights lights;
     private final BackgroundShader background;
 
@@ -58,6 +60,8 @@ final class Tracer {
         this.items = geometry.items;
         this.unbounded = geometry.unbounded;
         this.bvh = geometry.bvh;
+        this.boxes = bvh == null ? null : bvh.box;
+        this.children = bvh == null ? null : bvh.children;
         this.lights = lights;
         this.background = background;
         csgScratch = new CsgSolids.Scratch(csg.maxLeaves);
@@ -216,22 +220,22 @@ final class Tracer {
             }
             return found;
         }
+        if (entry(bvh.root, 0, tMax) == Double.POSITIVE_INFINITY) return found;
+        double[] boxes = this.boxes;
+        int[] children = this.children;
         int top = 0;
         int node = 0;
-        if (entry(0, tMax) == Double.POSITIVE_INFINITY) return found;
-        int[] link = bvh.link, count = bvh.count;
         while (true) {
-            int n = count[node];
-            if (n > 0) {
-                for (int k = link[node], end = k + n; k < end; k++) {
+            if (Bvh.isLeaf(node)) {
+                for (int k = Bvh.leafFirst(node), end = k + Bvh.leafCount(node); k < end; k++) {
                     if (hitItem(items[k], tMax)) {
                         found = true;
                         tMax = hit.t;
                     }
                 }
             } else {
-                int left = node + 1, right = link[node];
-                double tl = entry(left, tMax), tr = entry(right, tMax);
+                int left = children[2 * node], right = children[2 * node + 1];
+                double tl = entry(boxes, 12 * node, tMax), tr = entry(boxes, 12 * node + 6, tMax);
                 if (tl != Double.POSITIVE_INFINITY) {
                     if (tr != Double.POSITIVE_INFINITY) {
                         if (tl <= tr) {
@@ -260,12 +264,11 @@ final class Tracer {
     }
 
     /**
-     * Where the ray enters node {@code n}'s box within [0, tMax], or +∞ when it misses. A slab
-     * the ray runs exactly along gives NaN, which the comparisons ignore (conservatively a hit).
+     * Where the ray enters the box at {@code k} in {@code b} within [0, tMax], or +∞ when it
+     * misses. A slab the ray runs exactly along gives NaN, which the comparisons ignore
+     * (conservatively a hit).
      */
-    private double entry(int n, double tMax) {
-        double[] b = bvh.box;
-        int k = 6 * n;
+    private double entry(double[] b, int k, double tMax) {
         Ray r = ray;
         double near = 0, far = tMax;
         double t0 = (b[k + r.nearX] - r.ox) * r.ix, t1 = (b[k + 3 - r.nearX] - r.ox) * r.ix;
@@ -325,27 +328,26 @@ final class Tracer {
             }
             return product;
         }
-        if (entry(0, tMax) == Double.POSITIVE_INFINITY) return product;
-        int[] link = bvh.link, count = bvh.count;
+        if (entry(bvh.root, 0, tMax) == Double.POSITIVE_INFINITY) return product;
+        double[] boxes = this.boxes;
+        int[] children = this.children;
         int top = 0;
         int node = 0;
         while (true) {
-            int n = count[node];
-            if (n > 0) {
-                for (int k = link[node], end = k + n; k < end; k++) {
+            if (Bvh.isLeaf(node)) {
+                for (int k = Bvh.leafFirst(node), end = k + Bvh.leafCount(node); k < end; k++) {
                     product *= itemTransmittance(items[k], tMax);
                     if (product == 0) return blockedBy(light, items[k]);
                 }
             } else {
-                int left = node + 1, right = link[node];
-                boolean hl = entry(left, tMax) != Double.POSITIVE_INFINITY;
-                boolean hr = entry(right, tMax) != Double.POSITIVE_INFINITY;
+                boolean hl = entry(boxes, 12 * node, tMax) != Double.POSITIVE_INFINITY;
+                boolean hr = entry(boxes, 12 * node + 6, tMax) != Double.POSITIVE_INFINITY;
                 if (hl) {
-                    if (hr) stack[top++] = right;
-                    node = left;
+                    if (hr) stack[top++] = children[2 * node + 1];
+                    node = children[2 * node];
                     continue;
                 } else if (hr) {
-                    node = right;
+                    node = children[2 * node + 1];
                     continue;
                 }
             }
