@@ -100,7 +100,7 @@ final class Builtins {
             if (length == 0 || !Double.isFinite(length)) throw c.error("normalize of a zero vector");
             return new VectorValue(v.div(length));
         });
-        define("len(list)", c -> {
+        define("len(list or string)", c -> {
             Value v = c.arg(0);
             if (v instanceof ListValue list) return NumberValue.ofInt(list.items().size());
             if (v instanceof StringValue s) return NumberValue.ofInt(s.value().length());

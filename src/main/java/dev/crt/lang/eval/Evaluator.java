@@ -20,6 +20,7 @@ import dev.crt.lang.value.VectorValue;
 import dev.crt.scene.Csg;
 import dev.crt.scene.CsgOperation;
 import dev.crt.scene.Entity;
+import dev.crt.scene.Rgb;
 import dev.crt.scene.Scene;
 import dev.crt.scene.SourceSpan;
 import java.nio.file.Path;
@@ -405,8 +406,7 @@ public final class Evaluator extends CRTBaseVisitor<Value> {
         int type = ctx.op.getType();
         if (type == CRTParser.EQ || type == CRTParser.NE) {
             if (!a.typeName().equals(b.typeName())) throw badOperands(op, a, b, ctx);
-            boolean equal = a instanceof NumberValue x && b instanceof NumberValue y ? x.value() == y.value() : a.equals(b);
-            return BooleanValue.of(equal == (type == CRTParser.EQ));
+            return BooleanValue.of(same(a, b) == (type == CRTParser.EQ));
         }
         if (!(a instanceof NumberValue x) || !(b instanceof NumberValue y)) throw badOperands(op, a, b, ctx);
         return BooleanValue.of(switch (ctx.op.getType()) {
@@ -415,6 +415,32 @@ public final class Evaluator extends CRTBaseVisitor<Value> {
             case CRTParser.GT -> x.value() > y.value();
             default -> x.value() >= y.value();
         });
+    }
+
+    /**
+     * Equality of two values of the same type. Numbers compare by value wherever they sit, so
+     * {@code 1 == 1.0}, {@code [1] == [1.0]} and {@code -vec3(0, 1, 0) == vec3(0, -1, 0)} (whose
+     * zeros carry a sign) all hold, unlike the records' own equals.
+     */
+    private static boolean same(Value a, Value b) {
+        if (a instanceof NumberValue x && b instanceof NumberValue y) return x.value() == y.value();
+        if (a instanceof VectorValue x && b instanceof VectorValue y) {
+            Vec3 v = x.vector(), w = y.vector();
+            return v.x() == w.x() && v.y() == w.y() && v.z() == w.z();
+        }
+        if (a instanceof ColorValue x && b instanceof ColorValue y) {
+            Rgb c = x.color(), d = y.color();
+            return c.r() == d.r() && c.g() == d.g() && c.b() == d.b();
+        }
+        if (a instanceof ListValue xs && b instanceof ListValue ys) {
+            if (xs.items().size() != ys.items().size()) return false;
+            for (int i = 0; i < xs.items().size(); i++) {
+                Value x = xs.items().get(i), y = ys.items().get(i);
+                if (!x.typeName().equals(y.typeName()) || !same(x, y)) return false;
+            }
+            return true;
+        }
+        return a.equals(b);
     }
 
     @Override

@@ -82,17 +82,19 @@ final class ObjectBuilder {
         for (CRTParser.AttributeContext attr : written) {
             String name = attr.IDENT().getText();
             SourceSpan at = evaluator.span(attr);
+            // A wrong name is the name's fault alone: underline just it, as the reference's example does.
+            SourceSpan nameSpan = evaluator.span(attr.IDENT().getSymbol());
             if (!known.contains(name)) {
                 a.markFailed();
                 evaluator.report(evaluator.error("unknown attribute '" + name + "' for " + typeName
-                        + Spelling.suggestion(name, known), at));
+                        + Spelling.suggestion(name, known), nameSpan));
                 continue;
             }
             if (a.has(name)) {
                 SourceSpan first = a.spanOf(name);
                 a.markFailed();
                 evaluator.report(evaluator.error("attribute '" + name + "' is given twice (first at " + first.line()
-                        + ":" + first.column() + ")", at));
+                        + ":" + first.column() + ")", nameSpan));
                 continue;
             }
             try {

@@ -71,11 +71,27 @@ final class HumanErrorStrategy extends DefaultErrorStrategy {
             return closes != null ? closes : "unexpected end of file";
         }
         String message = "unexpected " + describe(token);
+        if (isModifierWord(token) && inside(parser.getContext(), CRTParser.ModifiedContext.class)) {
+            // `<translate v scale 2>`: the word is right, the comma before it is missing.
+            return message + "; expected ',' between modifiers";
+        }
         if (isReservedWord(token)) return message + " (it is a reserved word and cannot name a variable)";
         if (expected != null && expected.size() == 1 && !expected.contains(CRTParser.RBRACE)) {
             message += "; " + expectation(parser, expected);
         }
         return message;
+    }
+
+    private static boolean isModifierWord(Token token) {
+        int type = token.getType();
+        return type == CRTParser.SCALE || type == CRTParser.TRANSLATE || type == CRTParser.ROTATE;
+    }
+
+    private static boolean inside(ParserRuleContext ctx, Class<? extends ParserRuleContext> kind) {
+        for (ParserRuleContext c = ctx; c != null; c = c.getParent()) {
+            if (kind.isInstance(c)) return true;
+        }
+        return false;
     }
 
     private static boolean isReservedWord(Token token) {
@@ -166,8 +182,19 @@ final class HumanErrorStrategy extends DefaultErrorStrategy {
         else if (c instanceof CRTParser.MacroContext) what = "Macro";
         else if (c instanceof CRTParser.BlockContext) what = "the block";
         Token start = c.getStart();
-        if (what == null || start == null) return null;
+        // `x = Sphere` at the end of the file: no brace was opened, so none needs closing.
+        if (what == null || start == null || !opensBrace(c)) return null;
         return what + " opened at " + position(start);
+    }
+
+    private static boolean opensBrace(ParserRuleContext c) {
+        for (int i = 0; i < c.getChildCount(); i++) {
+            if (c.getChild(i) instanceof org.antlr.v4.runtime.tree.TerminalNode t
+                    && t.getSymbol().getType() == CRTParser.LBRACE) {
+                return true;
+            }
+        }
+        return false;
     }
 
     private static String tokenName(Parser parser, int type) {

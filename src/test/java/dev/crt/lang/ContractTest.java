@@ -1,0 +1,97 @@
+package dev.crt.lang;
+
+import static dev.crt.lang.Scripts.CAMERA;
+import static dev.crt.lang.Scripts.error;
+import static dev.crt.lang.Scripts.errors;
+import static dev.crt.lang.Scripts.scene;
+import static org.assertj.core.api.Assertions.assertThat;
+
+import dev.crt.scene.Csg;
+import dev.crt.scene.Scene;
+import dev.crt.scene.Sphere;
+import java.util.List;
+import org.junit.jupiter.api.Test;
+
+/** Statements of the language reference that the other tests leave uncovered, one by one. */
+class ContractTest {
+    /** The value of a top-level expression, read back through a sphere's radius. */
+    private static double number(String expression) {
+        Scene s = scene(CAMERA + "x = " + expression + "\nScene { Sphere { radius -> x } }\n");
+        return ((Sphere) s.entities().get(0)).radius();
+    }
+
+    private static double truth(String condition) { return number("(" + condition + ") ? 1 : 0"); }
+
+    private static void at(Diagnostic d, int line, int column, int length, String message) {
+        assertThat(d.message()).isEqualTo(message);
+        assertThat(d.span().line()).as("line of: " + message).isEqualTo(line);
+        assertThat(d.span().column()).as("column of: " + message).isEqualTo(column);
+        assertThat(d.span().end() - d.span().start()).as("length of: " + message).isEqualTo(length);
+    }
+
+    @Test
+    void precedenceLevelsOfSection3() {
+        assertThat(number("-[2, -3][1]")).as("index binds tighter than sign").isEqualTo(3);
+        assertThat(truth("!false == true")).as("! binds tighter than ==").isEqualTo(1);
+        assertThat(truth("!(false == true)")).isEqualTo(1);
+        assertThat(number("(a = b = 3) + a + b")).as("= is right-associative").isEqualTo(9);
+        assertThat(number("true ? 1 : true ? 2 : 3")).isEqualTo(1);
+        assertThat(number("2 * 3 % 4")).as("* and % are left-associative").isEqualTo(2);
+        assertThat(error("x = 1 < 2 == 2 < 3\n").message()).as("all comparisons share one left-associative level")
+                .isEqualTo("operator '==' cannot apply to boolean and number");
+        assertThat(truth("true || false && false")).as("&& binds tighter than ||").isEqualTo(1);
+        assertThat(number("5\n- 2")).as("a line starting with - continues").isEqualTo(3);
+
+        // Modifiers bind tighter than CSG: only the right operand moves.
+        Scene s = scene(CAMERA + "a = Sphere { }\nb = Sphere { }\nScene { a - b <translate vec3(1, 0, 0)> }\n");
+        Csg csg = (Csg) s.entities().get(0);
+        assertThat(((Sphere) csg.left()).transform().translationPart().x()).isZero();
+        assertThat(((Sphere) csg.right()).transform().translationPart().x()).isEqualTo(1);
+    }
+
+    @Test
+    void equalityComparesNumbersByValueWhereverTheySit() {
+        assertThat(truth("[1, [2]] == [1.0, [2.0]]")).isEqualTo(1);
+        assertThat(truth("-vec3(0, 1, 0) == vec3(0, -1, 0)")).as("-0 equals 0").isEqualTo(1);
+        assertThat(truth("-rgb(0, 0, 0) == rgb(0, 0, 0)")).isEqualTo(1);
+        assertThat(truth("[vec3(0, 0, 0)] == [-vec3(0, 0, 0)]")).isEqualTo(1);
+        assertThat(truth("[1, \"a\"] != [1, 2]")).as("items of different types differ").isEqualTo(1);
+        assertThat(truth("[1, 2] != [1, 2, 3]")).isEqualTo(1);
+        assertThat(truth("[] == []")).isEqualTo(1);
+    }
+
+    @Test
+    void piIsPredefinedButOriginalScriptsMayStillNameAVariablePi() {
+        // Compatibility: `pi` is an extension, so a 2015 script that assigns it must keep working.
+        assertThat(number("pi")).isEqualTo(Math.PI);
+        Scene s = scene(CAMERA + "pi = 3\nScene { Sphere { radius -> pi } }\n");
+        assertThat(((Sphere) s.entities().get(0)).radius()).isEqualTo(3);
+    }
+
+    @Test
+    void aWrongAttributeNameIsUnderlinedAlone() {
+        at(error("s = Sphere { radus -> 2 }\n"), 1, 14, 5, "unknown attribute 'radus' for Sphere (did you mean 'radius'?)");
+        at(error("s = Sphere { radius -> 1 radius -> 2 }\n"), 1, 26, 6, "attribute 'radius' is given twice (first at 1:14)");
+    }
+
+    @Test
+    void aMissingCommaBetweenModifiersIsSaidSo() {
+        Diagnostic d = errors(CAMERA + "Scene { Sphere { } <translate vec3(1, 0, 0) scale 2> }\n").get(0);
+        assertThat(d.message()).isEqualTo("unexpected 'scale'; expected ',' between modifiers");
+        assertThat(d.span().line()).isEqualTo(2);
+        assertThat(d.span().column()).isEqualTo(45);
+    }
+
+    @Test
+    void aTypeNameWithoutBracesDoesNotClaimAnOpenBrace() {
+        List<Diagnostic> es = errors("x = Sphere\n");
+        assertThat(es).extracting(Diagnostic::message).containsExactly("unexpected end of file");
+        assertThat(errors("x = Settings\n")).extracting(Diagnostic::message).noneMatch(m -> m.contains("to close"));
+    }
+
+    @Test
+    void lenSaysWhatItTakes() {
+        assertThat(error("x = len(3)\n").message()).isEqualTo("wrong arguments: len takes len(list or string), got len(number)");
+        assertThat(number("len(\"abc\") + len([1, 2])")).isEqualTo(5);
+    }
+}
