@@ -94,4 +94,13 @@ class ContractTest {
         assertThat(error("x = len(3)\n").message()).isEqualTo("wrong arguments: len takes len(list or string), got len(number)");
         assertThat(number("len(\"abc\") + len([1, 2])")).isEqualTo(5);
     }
+
+    @Test
+    void aWholeFloatWhereAnIntegerIsRequiredReadsAsAFloat() {
+        // "expects an integer, got the float 2" would read as a contradiction.
+        at(error("Settings { supersampling -> 2.0 }\n"), 1, 12, 20,
+                "attribute 'supersampling' of Settings expects an integer, got the float 2.0");
+        at(error("xs = [1, 2]\nx = xs[1.0]\n"), 2, 8, 3, "an index must be an integer, got the float 1.0");
+        at(error("xs = [1, 2]\nx = xs[2 / 2]\n"), 2, 8, 5, "an index must be an integer, got the float 1.0");
+    }
 }

@@ -521,7 +521,7 @@ public final class Evaluator extends CRTBaseVisitor<Value> {
         Value indexValue = visit(ctx.expression());
         SourceSpan where = span(ctx.expression());
         if (!(indexValue instanceof NumberValue n)) throw error("an index must be an integer, got " + describe(indexValue), where);
-        if (!n.integral()) throw error("an index must be an integer, got the float " + n, where);
+        if (!n.integral()) throw error("an index must be an integer, got the float " + NumberValue.formatFloat(n.value()), where);
         int length;
         if (target instanceof ListValue list) length = list.items().size();
         else if (target instanceof VectorValue || target instanceof ColorValue) length = 3;

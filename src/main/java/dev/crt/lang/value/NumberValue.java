@@ -26,4 +26,10 @@ public record NumberValue(double value, boolean integral) implements Value {
         if (v == Math.rint(v) && Math.abs(v) < 1e15) return Long.toString((long) v);
         return Double.toString(v);
     }
+
+    /** A float as a person writes one, with its point even when whole (2.0), so it never reads as an integer. */
+    public static String formatFloat(double v) {
+        String s = format(v);
+        return s.matches("-?\\d+") ? s + ".0" : s;
+    }
 }
