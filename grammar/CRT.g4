@@ -108,6 +108,10 @@ FLOAT
     ;
 INT : DIGIT+ ;
 
+// A number whose exponent has no digits ("1e", "2.5e-"). Lexed as one FLOAT so that the parser
+// goes on without a cascade; the compiler reports it.
+MALFORMED_FLOAT : (DIGIT+ ('.' DIGIT*)? | '.' DIGIT+) [eE] [+-]? -> type(FLOAT) ;
+
 // Escapes other than \" and \\ are lexed here and rejected by the compiler with a clear message.
 STRING : '"' ('\\' ~[\r\n] | ~["\\\r\n])* '"' ;
 

@@ -103,4 +103,11 @@ class ContractTest {
         at(error("xs = [1, 2]\nx = xs[1.0]\n"), 2, 8, 3, "an index must be an integer, got the float 1.0");
         at(error("xs = [1, 2]\nx = xs[2 / 2]\n"), 2, 8, 5, "an index must be an integer, got the float 1.0");
     }
+
+    @Test
+    void anExponentWithoutDigitsIsOneClearError() {
+        at(error("x = 2 * 1e\n"), 1, 9, 2, "malformed number '1e': an exponent needs digits, as in 1e3 or 2.5e-4");
+        at(error("x = 2.5E-\n"), 1, 5, 5, "malformed number '2.5E-': an exponent needs digits, as in 1e3 or 2.5e-4");
+        assertThat(number("1.e1 + 1E-1 + .5e+1 + 1.")).isEqualTo(16.1);
+    }
 }
