@@ -110,4 +110,12 @@ class ContractTest {
         at(error("x = 2.5E-\n"), 1, 5, 5, "malformed number '2.5E-': an exponent needs digits, as in 1e3 or 2.5e-4");
         assertThat(number("1.e1 + 1E-1 + .5e+1 + 1.")).isEqualTo(16.1);
     }
+
+    @Test
+    void columnsCountCharactersAsSeenEvenBeyondTheBasicPlane() {
+        // The emoji is one character (two Java chars); the offsets stay Java char offsets for editors.
+        Diagnostic d = error("x = [\"\uD83D\uDE00\", 1 + \"a\"]\n");
+        assertThat(d.span().column()).isEqualTo(11);
+        assertThat(d.span().start()).isEqualTo(11);
+    }
 }
