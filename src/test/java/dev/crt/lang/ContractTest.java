@@ -118,4 +118,11 @@ class ContractTest {
         assertThat(d.span().column()).isEqualTo(11);
         assertThat(d.span().start()).isEqualTo(11);
     }
+
+    @Test
+    void aTypeWrittenInLowercaseGetsAHint() {
+        Diagnostic d = errors("s = sphere { radius -> 1 }\n").get(0);
+        assertThat(d.message()).isEqualTo("unexpected '{' after 'sphere' (type names start with an uppercase letter: 'Sphere')");
+        assertThat(d.span().column()).isEqualTo(12);
+    }
 }

@@ -76,10 +76,27 @@ final class HumanErrorStrategy extends DefaultErrorStrategy {
             return message + "; expected ',' between modifiers";
         }
         if (isReservedWord(token)) return message + " (it is a reserved word and cannot name a variable)";
+        Token before = previous(parser, token);
+        if (token.getType() == CRTParser.LBRACE && before != null && before.getType() == CRTParser.IDENT) {
+            // `sphere { … }`: an object type written in lowercase.
+            String name = before.getText();
+            return message + " after '" + name + "' (type names start with an uppercase letter: '"
+                    + Character.toUpperCase(name.charAt(0)) + name.substring(1) + "')";
+        }
         if (expected != null && expected.size() == 1 && !expected.contains(CRTParser.RBRACE)) {
             message += "; " + expectation(parser, expected);
         }
         return message;
+    }
+
+    /** The token the parser saw before {@code token}, or null at the start. */
+    private static Token previous(Parser parser, Token token) {
+        org.antlr.v4.runtime.TokenStream tokens = parser.getInputStream();
+        for (int i = token.getTokenIndex() - 1; i >= 0; i--) {
+            Token t = tokens.get(i);
+            if (t.getChannel() == Token.DEFAULT_CHANNEL) return t;
+        }
+        return null;
     }
 
     private static boolean isModifierWord(Token token) {
