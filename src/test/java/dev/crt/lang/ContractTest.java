@@ -125,4 +125,11 @@ class ContractTest {
         assertThat(d.message()).isEqualTo("unexpected '{' after 'sphere' (type names start with an uppercase letter: 'Sphere')");
         assertThat(d.span().column()).isEqualTo(12);
     }
+
+    @Test
+    void theControlWordsAreReservedToo() {
+        assertThat(errors("while = 2\n").get(0).message()).isEqualTo("unexpected '=' ('while' is a reserved word and cannot name a variable)");
+        assertThat(errors("if = 2\n").get(0).message()).isEqualTo("unexpected '=' ('if' is a reserved word and cannot name a variable)");
+        assertThat(errors("else = 2\n").get(0).message()).startsWith("unexpected 'else'");
+    }
 }

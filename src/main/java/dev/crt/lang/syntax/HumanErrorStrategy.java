@@ -77,6 +77,9 @@ final class HumanErrorStrategy extends DefaultErrorStrategy {
         }
         if (isReservedWord(token)) return message + " (it is a reserved word and cannot name a variable)";
         Token before = previous(parser, token);
+        if (token.getType() == CRTParser.ASSIGN && before != null && isControlWord(before)) {
+            return message + " ('" + before.getText() + "' is a reserved word and cannot name a variable)";
+        }
         if (token.getType() == CRTParser.LBRACE && before != null && before.getType() == CRTParser.IDENT) {
             // `sphere { … }`: an object type written in lowercase.
             String name = before.getText();
@@ -97,6 +100,11 @@ final class HumanErrorStrategy extends DefaultErrorStrategy {
             if (t.getChannel() == Token.DEFAULT_CHANNEL) return t;
         }
         return null;
+    }
+
+    private static boolean isControlWord(Token token) {
+        int type = token.getType();
+        return type == CRTParser.WHILE || type == CRTParser.IF || type == CRTParser.ELSE;
     }
 
     private static boolean isModifierWord(Token token) {
