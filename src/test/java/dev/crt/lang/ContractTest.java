@@ -132,4 +132,10 @@ class ContractTest {
         assertThat(errors("if = 2\n").get(0).message()).isEqualTo("unexpected '=' ('if' is a reserved word and cannot name a variable)");
         assertThat(errors("else = 2\n").get(0).message()).startsWith("unexpected 'else'");
     }
+
+    @Test
+    void aParallelLightFromAPointTowardsItselfIsAnErrorWhateverTheSignOfZero() {
+        Diagnostic d = error("l = ParallelLight { from -> vec3(0, 0, 0) pointing -> -vec3(0, 0, 0) }\n");
+        assertThat(d.message()).isEqualTo("a ParallelLight's pointing must differ from its from");
+    }
 }

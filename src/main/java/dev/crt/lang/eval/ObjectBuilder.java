@@ -144,7 +144,8 @@ final class ObjectBuilder {
     private Value parallelLight(Attributes a) {
         Vec3 from = a.vector("from", null);
         Vec3 pointing = a.vector("pointing", null);
-        if (a.has("from") && a.has("pointing") && from.equals(pointing)) {
+        // By distance, not equals: -0 and 0 are the same coordinate.
+        if (a.has("from") && a.has("pointing") && from.minus(pointing).length() == 0) {
             a.error("pointing", "a ParallelLight's pointing must differ from its from");
         }
         return new LightValue(new ParallelLight(from, pointing, a.color("color", Rgb.WHITE),
