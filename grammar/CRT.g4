@@ -53,7 +53,7 @@ modifier : kind=(TRANSLATE | ROTATE | SCALE) arithmetic ;
 primary locals [Object cached]
     : INT                                                             # intLiteral
     | FLOAT                                                           # floatLiteral
-    | STRING                                                          # stringLiteral
+    | (STRING | UNTERMINATED_STRING)                                  # stringLiteral
     | (TRUE | FALSE)                                                  # booleanLiteral
     | IDENT                                                           # variable
     | NAME '{' attribute* '}'                                         # object
@@ -121,9 +121,10 @@ NAME  : [A-Z] [a-zA-Z0-9_]* ;
 COMMENT : '--' ~[\r\n]* -> skip ;
 WS      : [ \t\r\n\f\uFEFF]+ -> skip ;
 
-// Mistakes the lexer can recognise are kept off the parser's channel and reported once each,
-// so that they do not also produce a cascade of parse errors.
-UNTERMINATED_STRING : '"' ('\\' ~[\r\n] | ~["\\\r\n])* '\\'? -> channel(HIDDEN) ;
+// Mistakes the lexer can recognise are reported once each by the compiler. An unterminated string
+// still stands where a string may, and a stray character is kept off the parser's channel, so
+// that neither also produces a cascade of parse errors.
+UNTERMINATED_STRING : '"' ('\\' ~[\r\n] | ~["\\\r\n])* '\\'? ;
 BAD_CHARACTER       : . -> channel(HIDDEN) ;
 
 fragment DIGIT    : [0-9] ;

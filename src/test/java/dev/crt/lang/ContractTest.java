@@ -138,4 +138,10 @@ class ContractTest {
         Diagnostic d = error("l = ParallelLight { from -> vec3(0, 0, 0) pointing -> -vec3(0, 0, 0) }\n");
         assertThat(d.message()).isEqualTo("a ParallelLight's pointing must differ from its from");
     }
+
+    @Test
+    void anUnterminatedStringIsOneErrorNotACascade() {
+        at(error("s = \"abc\n"), 1, 5, 4, "unterminated string (a string ends with \" on the line it starts)");
+        at(error("x = \"a\" \"b\n"), 1, 9, 2, "unterminated string (a string ends with \" on the line it starts)");
+    }
 }
