@@ -144,4 +144,14 @@ class ContractTest {
         at(error("s = \"abc\n"), 1, 5, 4, "unterminated string (a string ends with \" on the line it starts)");
         at(error("x = \"a\" \"b\n"), 1, 9, 2, "unterminated string (a string ends with \" on the line it starts)");
     }
+
+    @Test
+    void aWrongOrMissingCloserNamesTheConstructStillOpen() {
+        assertThat(errors(CAMERA + "Scene { Sphere { } <translate vec3(1, 0, 0) }\n").get(0).message())
+                .isEqualTo("unexpected '}'; expected '>' to close '<' opened at 2:20");
+        assertThat(errors("x = [1, 2)\n").get(0).message()).isEqualTo("unexpected ')'; expected ']' to close '[' opened at 1:5");
+        // The '(' of `if` was never written, so no message may say where it was opened.
+        assertThat(errors("if x > 1 { }\n")).extracting(Diagnostic::message)
+                .containsExactly("expected '(' before 'x'", "expected ')' before '{'");
+    }
 }

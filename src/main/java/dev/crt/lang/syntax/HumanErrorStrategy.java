@@ -76,6 +76,11 @@ final class HumanErrorStrategy extends DefaultErrorStrategy {
             return message + "; expected ',' between modifiers";
         }
         if (isReservedWord(token)) return message + " (it is a reserved word and cannot name a variable)";
+        if (isCloser(token)) {
+            // `<translate v }`: a closer that is not the one the innermost open construct needs.
+            String closes = unclosed(parser.getContext());
+            if (closes != null && !closes.startsWith("expected '" + token.getText() + "'")) return message + "; " + closes;
+        }
         Token before = previous(parser, token);
         if (token.getType() == CRTParser.ASSIGN && before != null && isControlWord(before)) {
             return message + " ('" + before.getText() + "' is a reserved word and cannot name a variable)";
@@ -100,6 +105,11 @@ final class HumanErrorStrategy extends DefaultErrorStrategy {
             if (t.getChannel() == Token.DEFAULT_CHANNEL) return t;
         }
         return null;
+    }
+
+    private static boolean isCloser(Token token) {
+        int type = token.getType();
+        return type == CRTParser.RBRACE || type == CRTParser.RPAREN || type == CRTParser.RBRACKET;
     }
 
     private static boolean isControlWord(Token token) {
@@ -136,7 +146,8 @@ final class HumanErrorStrategy extends DefaultErrorStrategy {
                 what = "'('";
             } else if (c instanceof CRTParser.CallContext || c instanceof CRTParser.WhileLoopContext
                     || c instanceof CRTParser.IfChainContext) {
-                if (c.getChildCount() > 0 && !")".equals(c.getChild(c.getChildCount() - 1).getText())
+                // Only a '(' that was written needs closing: `if x > 1 {` never opened one.
+                if (has(c, CRTParser.LPAREN) && !")".equals(c.getChild(c.getChildCount() - 1).getText())
                         && !(c.getChild(c.getChildCount() - 1) instanceof CRTParser.BlockContext)) {
                     closer = ")";
                     what = "'('";
@@ -212,10 +223,13 @@ final class HumanErrorStrategy extends DefaultErrorStrategy {
         return what + " opened at " + position(start);
     }
 
-    private static boolean opensBrace(ParserRuleContext c) {
+    private static boolean opensBrace(ParserRuleContext c) { return has(c, CRTParser.LBRACE); }
+
+    private static boolean has(ParserRuleContext c, int tokenType) {
         for (int i = 0; i < c.getChildCount(); i++) {
+            // An error node is a token the recovery conjured up, not one the script has.
             if (c.getChild(i) instanceof org.antlr.v4.runtime.tree.TerminalNode t
-                    && t.getSymbol().getType() == CRTParser.LBRACE) {
+                    && !(t instanceof org.antlr.v4.runtime.tree.ErrorNode) && t.getSymbol().getType() == tokenType) {
                 return true;
             }
         }
