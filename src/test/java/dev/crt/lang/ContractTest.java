@@ -154,4 +154,17 @@ class ContractTest {
         assertThat(errors("if x > 1 { }\n")).extracting(Diagnostic::message)
                 .containsExactly("expected '(' before 'x'", "expected ')' before '{'");
     }
+
+    @Test
+    void noFunctionHandsOnAnInfinity() {
+        assertThat(error("x = dot(vec3(1e200, 0, 0), vec3(1e200, 0, 0))\n").message()).isEqualTo("the result of dot(…) is too large");
+        assertThat(error("x = cross(vec3(1e200, 0, 0), vec3(0, 1e200, 0))\n").message()).isEqualTo("the result of cross(…) is too large");
+        assertThat(error("x = degrees(1e308)\n").message()).isEqualTo("the result of degrees(…) is too large");
+        assertThat(error("x = rand(-1e308, 1e308)\n").message()).isEqualTo("the result of rand(…) is too large");
+        // Large but finite vectors keep their length and direction.
+        assertThat(number("length(vec3(3e200, 4e200, 0)) / 1e200")).isCloseTo(5, org.assertj.core.api.Assertions.within(1e-12));
+        assertThat(number("normalize(vec3(1e200, 1e200, 0))[0]")).isCloseTo(Math.sqrt(0.5), org.assertj.core.api.Assertions.within(1e-12));
+        Scene s = scene(CAMERA + "Scene { Plane { normal -> vec3(0, 1e200, 1e200) } }\n");
+        assertThat(((dev.crt.scene.Plane) s.entities().get(0)).normal().y()).isCloseTo(Math.sqrt(0.5), org.assertj.core.api.Assertions.within(1e-12));
+    }
 }

@@ -574,7 +574,13 @@ public final class Evaluator extends CRTBaseVisitor<Value> {
     }
 
     private Value callBuiltin(String name, Value[] args, CRTParser.CallContext ctx) {
-        return Builtins.call(name, new BuiltinCall(name, args, ctx));
+        Value result = Builtins.call(name, new BuiltinCall(name, args, ctx));
+        // One check for every function: an infinity or NaN would only surface later, in the picture.
+        boolean finite = result instanceof NumberValue n ? Double.isFinite(n.value())
+                : result instanceof VectorValue v ? v.vector().isFinite()
+                : !(result instanceof ColorValue c) || Double.isFinite(c.color().r() + c.color().g() + c.color().b());
+        if (!finite) throw error("the result of " + name + "(…) is too large", span(ctx));
+        return result;
     }
 
     /** The call site of a built-in, handing it its arguments checked against its signature. */

@@ -177,10 +177,11 @@ final class ObjectBuilder {
 
     private Value plane(Attributes a) {
         Vec3 normal = a.vector("normal", null);
-        if (a.has("normal") && normal.length() == 0) {
+        Vec3 unit = Builtins.unit(normal);
+        if (a.has("normal") && unit == null) {
             a.error("normal", "a Plane's normal must not be the zero vector");
         }
-        Vec3 unit = normal.length() == 0 ? Vec3.Y : normal.normalize();
+        if (unit == null) unit = Vec3.Y;
         return EntityValue.of(new Plane(unit, a.vector("position", Vec3.ZERO), a.material("material"),
                 Transform.IDENTITY, a.objectSpan()));
     }
