@@ -167,4 +167,10 @@ class ContractTest {
         Scene s = scene(CAMERA + "Scene { Plane { normal -> vec3(0, 1e200, 1e200) } }\n");
         assertThat(((dev.crt.scene.Plane) s.entities().get(0)).normal().y()).isCloseTo(Math.sqrt(0.5), org.assertj.core.api.Assertions.within(1e-12));
     }
+
+    @Test
+    void hugeNumbersInMessagesAreWrittenAsInScripts() {
+        assertThat(error("Settings { width -> 10000000000000000000000 }\n").message()).isEqualTo("width must be an integer >= 1, got 1e22");
+        assertThat(error("xs = [1]\nx = xs[floor(1.5e300)]\n").message()).isEqualTo("index 1.5e300 is out of range for a list of length 1");
+    }
 }
