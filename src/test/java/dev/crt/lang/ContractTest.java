@@ -173,4 +173,12 @@ class ContractTest {
         assertThat(error("Settings { width -> 10000000000000000000000 }\n").message()).isEqualTo("width must be an integer >= 1, got 1e22");
         assertThat(error("xs = [1]\nx = xs[floor(1.5e300)]\n").message()).isEqualTo("index 1.5e300 is out of range for a list of length 1");
     }
+
+    @Test
+    void onlyAVariableCanBeAssigned() {
+        String message = "unexpected '='; only a variable can be assigned, as in 'name = value'";
+        assertThat(errors("v = [1]\nv[0] = 1\n").get(0).message()).isEqualTo(message);
+        assertThat(errors("x = (a) = 2\n").get(0).message()).isEqualTo(message);
+        assertThat(errors("Sphere = 1\n").get(0).message()).isEqualTo(message);
+    }
 }

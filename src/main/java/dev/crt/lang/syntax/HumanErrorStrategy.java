@@ -85,6 +85,10 @@ final class HumanErrorStrategy extends DefaultErrorStrategy {
         if (token.getType() == CRTParser.ASSIGN && before != null && isControlWord(before)) {
             return message + " ('" + before.getText() + "' is a reserved word and cannot name a variable)";
         }
+        if (token.getType() == CRTParser.ASSIGN) {
+            // `v[0] = 1`, `3 = x`, `Sphere = 1`: values never change, only names are bound.
+            return message + "; only a variable can be assigned, as in 'name = value'";
+        }
         if (token.getType() == CRTParser.LBRACE && before != null && before.getType() == CRTParser.IDENT) {
             // `sphere { … }`: an object type written in lowercase.
             String name = before.getText();
