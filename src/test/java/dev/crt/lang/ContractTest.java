@@ -181,4 +181,14 @@ class ContractTest {
         assertThat(errors("x = (a) = 2\n").get(0).message()).isEqualTo(message);
         assertThat(errors("Sphere = 1\n").get(0).message()).isEqualTo(message);
     }
+
+    @Test
+    void aMisspeltModifierIsNamed() {
+        Diagnostic d = errors(CAMERA + "s = Sphere { }\nScene { s <rotat vec3(0, 90, 0)> }\n").get(0);
+        assertThat(d.message()).isEqualTo("unknown modifier 'rotat' (did you mean 'rotate'?)");
+        assertThat(d.span().line()).isEqualTo(3);
+        assertThat(d.span().column()).isEqualTo(12);
+        assertThat(errors("s = Sphere { }\nScene { s <scale 2, move vec3(1, 0, 0)> }\n").get(0).message())
+                .isEqualTo("unknown modifier 'move' (the modifiers are translate, rotate and scale)");
+    }
 }

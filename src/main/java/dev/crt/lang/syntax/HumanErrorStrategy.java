@@ -1,6 +1,7 @@
 package dev.crt.lang.syntax;
 
 import dev.crt.lang.TextPositions;
+import dev.crt.lang.eval.Spelling;
 import dev.crt.lang.parser.CRTParser;
 import dev.crt.scene.SourceSpan;
 import java.util.ArrayList;
@@ -20,6 +21,7 @@ import org.antlr.v4.runtime.misc.IntervalSet;
  */
 final class HumanErrorStrategy extends DefaultErrorStrategy {
     private static final int[] EXPRESSION_STARTS = {CRTParser.INT, CRTParser.IDENT, CRTParser.LPAREN};
+    private static final List<String> MODIFIERS = List.of("translate", "rotate", "scale");
 
     private final TextPositions positions;
 
@@ -27,13 +29,12 @@ final class HumanErrorStrategy extends DefaultErrorStrategy {
 
     @Override
     protected void reportNoViableAlternative(Parser parser, NoViableAltException e) {
-        parser.notifyErrorListeners(e.getOffendingToken(), unexpected(parser, e.getOffendingToken(), null), e);
+        report(parser, e.getOffendingToken(), unexpected(parser, e.getOffendingToken(), null), e);
     }
 
     @Override
     protected void reportInputMismatch(Parser parser, InputMismatchException e) {
-        parser.notifyErrorListeners(e.getOffendingToken(),
-                unexpected(parser, e.getOffendingToken(), e.getExpectedTokens()), e);
+        report(parser, e.getOffendingToken(), unexpected(parser, e.getOffendingToken(), e.getExpectedTokens()), e);
     }
 
     @Override
@@ -41,7 +42,40 @@ final class HumanErrorStrategy extends DefaultErrorStrategy {
         if (inErrorRecoveryMode(parser)) return;
         beginErrorCondition(parser);
         Token token = parser.getCurrentToken();
-        parser.notifyErrorListeners(token, unexpected(parser, token, null), null);
+        report(parser, token, unexpected(parser, token, null), null);
+    }
+
+    private static void report(Parser parser, Token token, String message, org.antlr.v4.runtime.RecognitionException e) {
+        Token word = misspeltModifier(parser, token);
+        if (word != null) {
+            parser.notifyErrorListeners(word, unknownModifier(word.getText()), e);
+        } else {
+            parser.notifyErrorListeners(token, message, e);
+        }
+    }
+
+    private static String unknownModifier(String word) {
+        String suggestion = Spelling.suggestion(word, MODIFIERS);
+        return "unknown modifier '" + word + "'"
+                + (suggestion.isEmpty() ? " (the modifiers are translate, rotate and scale)" : suggestion);
+    }
+
+    /**
+     * `s <rotat vec3(0, 90, 0)>` parses as a comparison with a variable 'rotat' until it fails at
+     * the end; the real mistake is the word after '<', when it is close to a modifier's name.
+     */
+    private static Token misspeltModifier(Parser parser, Token offending) {
+        org.antlr.v4.runtime.TokenStream tokens = parser.getInputStream();
+        boolean closed = false;
+        for (int i = offending.getTokenIndex() - 1, seen = 0; i > 0 && seen < 64; i--, seen++) {
+            Token t = tokens.get(i);
+            if (t.getType() == CRTParser.GT) closed = true;
+            if (closed && t.getType() == CRTParser.IDENT && tokens.get(i - 1).getType() == CRTParser.LT
+                    && !Spelling.suggestion(t.getText(), MODIFIERS).isEmpty()) {
+                return t;
+            }
+        }
+        return null;
     }
 
     @Override
@@ -54,6 +88,11 @@ final class HumanErrorStrategy extends DefaultErrorStrategy {
         if (expected.size() == 1 && (expected.contains(CRTParser.RPAREN) || expected.contains(CRTParser.RBRACKET)
                 || expected.contains(CRTParser.RBRACE) || expected.contains(CRTParser.GT))) {
             message = unclosed(parser.getContext());
+        }
+        if (message == null && token.getType() == CRTParser.IDENT && expected.contains(CRTParser.SCALE)
+                && expected.contains(CRTParser.TRANSLATE) && expected.contains(CRTParser.ROTATE)) {
+            parser.notifyErrorListeners(token, unknownModifier(token.getText()), null);
+            return;
         }
         if (message == null) message = expectation(parser, expected);
         if (token.getType() != Token.EOF) message += " before " + describe(token);
