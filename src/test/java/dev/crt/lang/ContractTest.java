@@ -190,5 +190,8 @@ class ContractTest {
         assertThat(d.span().column()).isEqualTo(12);
         assertThat(errors("s = Sphere { }\nScene { s <scale 2, move vec3(1, 0, 0)> }\n").get(0).message())
                 .isEqualTo("unknown modifier 'move' (the modifiers are translate, rotate and scale)");
+        // A comparison with a variable of a modifier-like name is not mistaken for one.
+        assertThat(errors("scal2 = 1\nok = 0 < scal2 && 2 > 1\ny = )\n")).extracting(Diagnostic::message)
+                .containsExactly("unexpected ')'");
     }
 }

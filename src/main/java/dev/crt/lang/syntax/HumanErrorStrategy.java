@@ -65,12 +65,13 @@ final class HumanErrorStrategy extends DefaultErrorStrategy {
      * the end; the real mistake is the word after '<', when it is close to a modifier's name.
      */
     private static Token misspeltModifier(Parser parser, Token offending) {
+        // The failure comes right after the '>' that was meant to close the modifier list.
+        Token closer = previous(parser, offending);
+        if (closer == null || closer.getType() != CRTParser.GT) return null;
         org.antlr.v4.runtime.TokenStream tokens = parser.getInputStream();
-        boolean closed = false;
-        for (int i = offending.getTokenIndex() - 1, seen = 0; i > 0 && seen < 64; i--, seen++) {
+        for (int i = closer.getTokenIndex() - 1, seen = 0; i > 0 && seen < 32; i--, seen++) {
             Token t = tokens.get(i);
-            if (t.getType() == CRTParser.GT) closed = true;
-            if (closed && t.getType() == CRTParser.IDENT && tokens.get(i - 1).getType() == CRTParser.LT
+            if (t.getType() == CRTParser.IDENT && tokens.get(i - 1).getType() == CRTParser.LT
                     && !Spelling.suggestion(t.getText(), MODIFIERS).isEmpty()) {
                 return t;
             }
