@@ -194,4 +194,26 @@ class ContractTest {
         assertThat(errors("scal2 = 1\nok = 0 < scal2 && 2 > 1\ny = )\n")).extracting(Diagnostic::message)
                 .containsExactly("unexpected ')'");
     }
+
+    /** The original CRT's runaway sample (section 8), compiled in a JVM with a heap too small for 10,000,000 entities. */
+    static final class SmallHeapSample {
+        public static void main(String[] args) {
+            String sample = "f = Macro (max) { i = 0\n"
+                    + "while (i < max) { sphere1 <translate vec3(i*1.0, 0.0, 0.0)>  i = i - 1 } }\n"
+                    + "sphere1 = Sphere { }\nScene { f(3) }\n";
+            Diagnostic d = Scripts.compile(sample).diagnostics().get(0);
+            System.out.println(d.span().line() + ":" + d.span().column() + " " + d.message());
+        }
+    }
+
+    @Test
+    void theRunawaySampleStopsAtItsLoopEvenWhenTheHeapIsTooSmallForTheIterationBudget() throws Exception {
+        String javaBin = java.nio.file.Path.of(System.getProperty("java.home"), "bin", "java").toString();
+        Process p = new ProcessBuilder(javaBin, "-Xmx96m", "-XX:+UseSerialGC", "-cp", System.getProperty("java.class.path"),
+                SmallHeapSample.class.getName()).redirectErrorStream(true).start();
+        String out = new String(p.getInputStream().readAllBytes(), java.nio.charset.StandardCharsets.UTF_8);
+        assertThat(p.waitFor()).as(out).isZero();
+        assertThat(out).startsWith("2:1 evaluation stopped: the loops' values filled the memory after ")
+                .contains("iterations (is the loop condition ever false?)");
+    }
 }

@@ -179,6 +179,13 @@ public final class Evaluator extends CRTBaseVisitor<Value> {
                 if (stop != null) throw new EvaluationStopped(stop, span(loop.WHILE().getSymbol()), callChain());
                 executeAll(body, place, out);
             }
+        } catch (OutOfMemoryError full) {
+            // A runaway loop that makes an entity per turn (the original CRT's sample) can fill a
+            // small heap before the iteration budget stops it: stop it here, at the loop, just as
+            // the budget would. The evaluation ends, so what the loop made can go.
+            if (out != null) out.clear();
+            placed.clear();
+            throw new EvaluationStopped(budget.outOfMemory(), span(loop.WHILE().getSymbol()), callChain());
         } finally {
             loopDepth--;
         }
