@@ -190,6 +190,10 @@ class ContractTest {
         assertThat(d.span().column()).isEqualTo(12);
         assertThat(errors("s = Sphere { }\nScene { s <scale 2, move vec3(1, 0, 0)> }\n").get(0).message())
                 .isEqualTo("unknown modifier 'move' (the modifiers are translate, rotate and scale)");
+        // `s <rotat v> t` is even valid syntax (two comparisons): the evaluation names the modifier.
+        Diagnostic valid = errors("s = Sphere { }\nScene { s <rotat vec3(0, 90, 0)> s }\n").get(0);
+        assertThat(valid.message()).isEqualTo("unknown modifier 'rotat' (did you mean 'rotate'?)");
+        assertThat(valid.span().column()).isEqualTo(12);
         // A comparison with a variable of a modifier-like name is not mistaken for one.
         assertThat(errors("scal2 = 1\nok = 0 < scal2 && 2 > 1\ny = )\n")).extracting(Diagnostic::message)
                 .containsExactly("unexpected ')'");

@@ -773,7 +773,20 @@ public final class Evaluator extends CRTBaseVisitor<Value> {
         if (Builtins.exists(name)) {
             throw error("'" + name + "' is a function: call it as " + Builtins.signature(name), span(ctx));
         }
+        String modifier = Spelling.suggestion(name, MODIFIERS);
+        if (!modifier.isEmpty() && rightOfLessThan(ctx)) {
+            // `s <rotat vec3(0, 90, 0)> t` parses as two comparisons; the word was meant as a modifier.
+            throw error("unknown modifier '" + name + "'" + modifier, span(ctx));
+        }
         throw error("variable '" + name + "' is not assigned" + Spelling.suggestion(name, visibleNames()), span(ctx));
+    }
+
+    private static final List<String> MODIFIERS = List.of("translate", "rotate", "scale");
+
+    private static boolean rightOfLessThan(ParserRuleContext ctx) {
+        ParserRuleContext c = ctx;
+        while (c.getParent() != null && c.getParent().getChildCount() == 1) c = c.getParent();
+        return c.getParent() instanceof CRTParser.ComparisonContext k && k.op.getType() == CRTParser.LT && k.getChild(2) == c;
     }
 
     private Set<String> visibleNames() {
