@@ -53,7 +53,7 @@ modifier : kind=(TRANSLATE | ROTATE | SCALE) arithmetic ;
 primary locals [Object cached]
     : INT                                                             # intLiteral
     | FLOAT                                                           # floatLiteral
-    | STRING                                                          # stringLiteral
+    | (STRING | UNTERMINATED_STRING)                                  # stringLiteral
     | (TRUE | FALSE)                                                  # booleanLiteral
     | IDENT                                                           # variable
     | NAME '{' attribute* '}'                                         # object
@@ -108,6 +108,10 @@ FLOAT
     ;
 INT : DIGIT+ ;
 
+// A number whose exponent has no digits ("1e", "2.5e-"). Lexed as one FLOAT so that the parser
+// goes on without a cascade; the compiler reports it.
+MALFORMED_FLOAT : (DIGIT+ ('.' DIGIT*)? | '.' DIGIT+) [eE] [+-]? -> type(FLOAT) ;
+
 // Escapes other than \" and \\ are lexed here and rejected by the compiler with a clear message.
 STRING : '"' ('\\' ~[\r\n] | ~["\\\r\n])* '"' ;
 
@@ -117,9 +121,10 @@ NAME  : [A-Z] [a-zA-Z0-9_]* ;
 COMMENT : '--' ~[\r\n]* -> skip ;
 WS      : [ \t\r\n\f\uFEFF]+ -> skip ;
 
-// Mistakes the lexer can recognise are kept off the parser's channel and reported once each,
-// so that they do not also produce a cascade of parse errors.
-UNTERMINATED_STRING : '"' ('\\' ~[\r\n] | ~["\\\r\n])* '\\'? -> channel(HIDDEN) ;
+// Mistakes the lexer can recognise are reported once each by the compiler. An unterminated string
+// still stands where a string may, and a stray character is kept off the parser's channel, so
+// that neither also produces a cascade of parse errors.
+UNTERMINATED_STRING : '"' ('\\' ~[\r\n] | ~["\\\r\n])* '\\'? ;
 BAD_CHARACTER       : . -> channel(HIDDEN) ;
 
 fragment DIGIT    : [0-9] ;

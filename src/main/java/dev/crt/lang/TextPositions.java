@@ -5,8 +5,8 @@ import java.util.Arrays;
 
 /**
  * Turns character offsets of a script into 1-based lines and columns (a CR LF pair, a LF or a CR
- * is one line break; every character, a tab too, is one column), and the code-point indices ANTLR
- * reports into character offsets.
+ * is one line break; every character, a tab or an emoji too, is one column), and the code-point
+ * indices ANTLR reports into character offsets.
  */
 public final class TextPositions {
     private final String file;
@@ -64,7 +64,9 @@ public final class TextPositions {
         start = Math.min(Math.max(start, 0), text.length());
         end = Math.min(Math.max(end, start), text.length());
         int line = lineOf(start);
-        return new SourceSpan(file, line + 1, start - lineStarts[line] + 1, start, end);
+        // The column counts characters as a person sees them: an emoji (two chars in Java) is one.
+        int column = charOfCodePoint == null ? start - lineStarts[line] : text.codePointCount(lineStarts[line], start);
+        return new SourceSpan(file, line + 1, column + 1, start, end);
     }
 
     private int lineOf(int offset) {

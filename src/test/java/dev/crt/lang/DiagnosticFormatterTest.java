@@ -14,7 +14,7 @@ class DiagnosticFormatterTest {
         assertThat(DiagnosticFormatter.format(d, text)).isEqualTo("""
                 test.crt:2:2: error: unknown attribute 'radus' for Sphere (did you mean 'radius'?)
                 \tradus -> 2
-                \t^~~~~~~~~~""");
+                \t^~~~~""");
     }
 
     @Test

@@ -56,7 +56,7 @@ class SyntaxErrorsTest {
 
     @Test
     void assignmentNeedsAnIdentifierOnTheLeft() {
-        at(errors("3 = x\n").get(0), 1, 3, "unexpected '='");
+        at(errors("3 = x\n").get(0), 1, 3, "unexpected '='; only a variable can be assigned, as in 'name = value'");
     }
 
     @Test

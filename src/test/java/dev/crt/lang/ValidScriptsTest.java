@@ -291,7 +291,7 @@ class ValidScriptsTest {
         assertThat(s.settings().height()).isEqualTo(200);
         assertThat(s.settings().supersampling()).isEqualTo(2);
         assertThat(Scripts.error("Settings { width -> 600 / 2 }\n").message())
-                .isEqualTo("attribute 'width' of Settings expects an integer, got the float 300");
+                .isEqualTo("attribute 'width' of Settings expects an integer, got the float 300.0");
     }
 
     @Test

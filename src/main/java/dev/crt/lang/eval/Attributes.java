@@ -133,7 +133,7 @@ final class Attributes {
             return fallback;
         }
         if (!n.integral()) {
-            error(name, "attribute '" + name + "' of " + type + " expects an integer, got the float " + n);
+            error(name, "attribute '" + name + "' of " + type + " expects an integer, got the float " + NumberValue.formatFloat(n.value()));
             return fallback;
         }
         if (n.value() < minimum || n.value() > Integer.MAX_VALUE) {

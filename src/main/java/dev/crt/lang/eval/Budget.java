@@ -32,6 +32,12 @@ final class Budget {
     }
 
     /** Why evaluation must stop now, or null to go on. */
+    /** Said when the loops' values fill the heap before the iteration budget is spent. */
+    String outOfMemory() {
+        return String.format("evaluation stopped: the loops' values filled the memory after %,d iterations"
+                + " (is the loop condition ever false?)", iterations);
+    }
+
     String tick() {
         if ((++ticks & 1023) != 0) return null;
         if (cancelled) return "evaluation stopped: the compile was cancelled";

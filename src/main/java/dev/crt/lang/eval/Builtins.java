@@ -93,14 +93,17 @@ final class Builtins {
         define("mix(a, b, number) with a and b both numbers, vec3s or rgbs", Builtins::mix, 3);
         define("dot(vec3, vec3)", c -> NumberValue.ofFloat(c.vector(0).dot(c.vector(1))));
         define("cross(vec3, vec3)", c -> new VectorValue(c.vector(0).cross(c.vector(1))));
-        define("length(vec3)", c -> NumberValue.ofFloat(c.vector(0).length()));
-        define("normalize(vec3)", c -> {
+        define("length(vec3)", c -> {
             Vec3 v = c.vector(0);
-            double length = v.length();
-            if (length == 0 || !Double.isFinite(length)) throw c.error("normalize of a zero vector");
-            return new VectorValue(v.div(length));
+            // hypot, as the plain square root of the sum of squares overflows for components near 1e155.
+            return NumberValue.ofFloat(Math.hypot(Math.hypot(v.x(), v.y()), v.z()));
         });
-        define("len(list)", c -> {
+        define("normalize(vec3)", c -> {
+            Vec3 unit = unit(c.vector(0));
+            if (unit == null) throw c.error("normalize of a zero vector");
+            return new VectorValue(unit);
+        });
+        define("len(list or string)", c -> {
             Value v = c.arg(0);
             if (v instanceof ListValue list) return NumberValue.ofInt(list.items().size());
             if (v instanceof StringValue s) return NumberValue.ofInt(s.value().length());
@@ -153,6 +156,17 @@ final class Builtins {
             return new ColorValue(x.color().plus(y.color().minus(x.color()).times(t)));
         }
         throw c.wrongArguments();
+    }
+
+    /**
+     * The vector scaled to length 1, or null for the zero vector. It is scaled by its largest
+     * component first, so that vec3(1e200, 1e200, 0) does not overflow to a zero result.
+     */
+    static Vec3 unit(Vec3 v) {
+        double largest = Math.max(Math.abs(v.x()), Math.max(Math.abs(v.y()), Math.abs(v.z())));
+        if (largest == 0) return null;
+        Vec3 scaled = v.div(largest);
+        return scaled.div(scaled.length());
     }
 
     private static boolean integral(Value v) { return v instanceof NumberValue n && n.integral(); }

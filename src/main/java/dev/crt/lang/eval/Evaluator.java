@@ -20,6 +20,7 @@ import dev.crt.lang.value.VectorValue;
 import dev.crt.scene.Csg;
 import dev.crt.scene.CsgOperation;
 import dev.crt.scene.Entity;
+import dev.crt.scene.Rgb;
 import dev.crt.scene.Scene;
 import dev.crt.scene.SourceSpan;
 import java.nio.file.Path;
@@ -178,6 +179,13 @@ public final class Evaluator extends CRTBaseVisitor<Value> {
                 if (stop != null) throw new EvaluationStopped(stop, span(loop.WHILE().getSymbol()), callChain());
                 executeAll(body, place, out);
             }
+        } catch (OutOfMemoryError full) {
+            // A runaway loop that makes an entity per turn (the original CRT's sample) can fill a
+            // small heap before the iteration budget stops it: stop it here, at the loop, just as
+            // the budget would. The evaluation ends, so what the loop made can go.
+            if (out != null) out.clear();
+            placed.clear();
+            throw new EvaluationStopped(budget.outOfMemory(), span(loop.WHILE().getSymbol()), callChain());
         } finally {
             loopDepth--;
         }
@@ -405,8 +413,7 @@ public final class Evaluator extends CRTBaseVisitor<Value> {
         int type = ctx.op.getType();
         if (type == CRTParser.EQ || type == CRTParser.NE) {
             if (!a.typeName().equals(b.typeName())) throw badOperands(op, a, b, ctx);
-            boolean equal = a instanceof NumberValue x && b instanceof NumberValue y ? x.value() == y.value() : a.equals(b);
-            return BooleanValue.of(equal == (type == CRTParser.EQ));
+            return BooleanValue.of(same(a, b) == (type == CRTParser.EQ));
         }
         if (!(a instanceof NumberValue x) || !(b instanceof NumberValue y)) throw badOperands(op, a, b, ctx);
         return BooleanValue.of(switch (ctx.op.getType()) {
@@ -415,6 +422,32 @@ public final class Evaluator extends CRTBaseVisitor<Value> {
             case CRTParser.GT -> x.value() > y.value();
             default -> x.value() >= y.value();
         });
+    }
+
+    /**
+     * Equality of two values of the same type. Numbers compare by value wherever they sit, so
+     * {@code 1 == 1.0}, {@code [1] == [1.0]} and {@code -vec3(0, 1, 0) == vec3(0, -1, 0)} (whose
+     * zeros carry a sign) all hold, unlike the records' own equals.
+     */
+    private static boolean same(Value a, Value b) {
+        if (a instanceof NumberValue x && b instanceof NumberValue y) return x.value() == y.value();
+        if (a instanceof VectorValue x && b instanceof VectorValue y) {
+            Vec3 v = x.vector(), w = y.vector();
+            return v.x() == w.x() && v.y() == w.y() && v.z() == w.z();
+        }
+        if (a instanceof ColorValue x && b instanceof ColorValue y) {
+            Rgb c = x.color(), d = y.color();
+            return c.r() == d.r() && c.g() == d.g() && c.b() == d.b();
+        }
+        if (a instanceof ListValue xs && b instanceof ListValue ys) {
+            if (xs.items().size() != ys.items().size()) return false;
+            for (int i = 0; i < xs.items().size(); i++) {
+                Value x = xs.items().get(i), y = ys.items().get(i);
+                if (!x.typeName().equals(y.typeName()) || !same(x, y)) return false;
+            }
+            return true;
+        }
+        return a.equals(b);
     }
 
     @Override
@@ -495,7 +528,7 @@ public final class Evaluator extends CRTBaseVisitor<Value> {
         Value indexValue = visit(ctx.expression());
         SourceSpan where = span(ctx.expression());
         if (!(indexValue instanceof NumberValue n)) throw error("an index must be an integer, got " + describe(indexValue), where);
-        if (!n.integral()) throw error("an index must be an integer, got the float " + n, where);
+        if (!n.integral()) throw error("an index must be an integer, got the float " + NumberValue.formatFloat(n.value()), where);
         int length;
         if (target instanceof ListValue list) length = list.items().size();
         else if (target instanceof VectorValue || target instanceof ColorValue) length = 3;
@@ -548,7 +581,13 @@ public final class Evaluator extends CRTBaseVisitor<Value> {
     }
 
     private Value callBuiltin(String name, Value[] args, CRTParser.CallContext ctx) {
-        return Builtins.call(name, new BuiltinCall(name, args, ctx));
+        Value result = Builtins.call(name, new BuiltinCall(name, args, ctx));
+        // One check for every function: an infinity or NaN would only surface later, in the picture.
+        boolean finite = result instanceof NumberValue n ? Double.isFinite(n.value())
+                : result instanceof VectorValue v ? v.vector().isFinite()
+                : !(result instanceof ColorValue c) || Double.isFinite(c.color().r() + c.color().g() + c.color().b());
+        if (!finite) throw error("the result of " + name + "(…) is too large", span(ctx));
+        return result;
     }
 
     /** The call site of a built-in, handing it its arguments checked against its signature. */
@@ -734,7 +773,20 @@ public final class Evaluator extends CRTBaseVisitor<Value> {
         if (Builtins.exists(name)) {
             throw error("'" + name + "' is a function: call it as " + Builtins.signature(name), span(ctx));
         }
+        String modifier = Spelling.suggestion(name, MODIFIERS);
+        if (!modifier.isEmpty() && rightOfLessThan(ctx)) {
+            // `s <rotat vec3(0, 90, 0)> t` parses as two comparisons; the word was meant as a modifier.
+            throw error("unknown modifier '" + name + "'" + modifier, span(ctx));
+        }
         throw error("variable '" + name + "' is not assigned" + Spelling.suggestion(name, visibleNames()), span(ctx));
+    }
+
+    private static final List<String> MODIFIERS = List.of("translate", "rotate", "scale");
+
+    private static boolean rightOfLessThan(ParserRuleContext ctx) {
+        ParserRuleContext c = ctx;
+        while (c.getParent() != null && c.getParent().getChildCount() == 1) c = c.getParent();
+        return c.getParent() instanceof CRTParser.ComparisonContext k && k.op.getType() == CRTParser.LT && k.getChild(2) == c;
     }
 
     private Set<String> visibleNames() {

@@ -82,17 +82,19 @@ final class ObjectBuilder {
         for (CRTParser.AttributeContext attr : written) {
             String name = attr.IDENT().getText();
             SourceSpan at = evaluator.span(attr);
+            // A wrong name is the name's fault alone: underline just it, as the reference's example does.
+            SourceSpan nameSpan = evaluator.span(attr.IDENT().getSymbol());
             if (!known.contains(name)) {
                 a.markFailed();
                 evaluator.report(evaluator.error("unknown attribute '" + name + "' for " + typeName
-                        + Spelling.suggestion(name, known), at));
+                        + Spelling.suggestion(name, known), nameSpan));
                 continue;
             }
             if (a.has(name)) {
                 SourceSpan first = a.spanOf(name);
                 a.markFailed();
                 evaluator.report(evaluator.error("attribute '" + name + "' is given twice (first at " + first.line()
-                        + ":" + first.column() + ")", at));
+                        + ":" + first.column() + ")", nameSpan));
                 continue;
             }
             try {
@@ -142,7 +144,8 @@ final class ObjectBuilder {
     private Value parallelLight(Attributes a) {
         Vec3 from = a.vector("from", null);
         Vec3 pointing = a.vector("pointing", null);
-        if (a.has("from") && a.has("pointing") && from.equals(pointing)) {
+        // By distance, not equals: -0 and 0 are the same coordinate.
+        if (a.has("from") && a.has("pointing") && from.minus(pointing).length() == 0) {
             a.error("pointing", "a ParallelLight's pointing must differ from its from");
         }
         return new LightValue(new ParallelLight(from, pointing, a.color("color", Rgb.WHITE),
@@ -174,10 +177,11 @@ final class ObjectBuilder {
 
     private Value plane(Attributes a) {
         Vec3 normal = a.vector("normal", null);
-        if (a.has("normal") && normal.length() == 0) {
+        Vec3 unit = Builtins.unit(normal);
+        if (a.has("normal") && unit == null) {
             a.error("normal", "a Plane's normal must not be the zero vector");
         }
-        Vec3 unit = normal.length() == 0 ? Vec3.Y : normal.normalize();
+        if (unit == null) unit = Vec3.Y;
         return EntityValue.of(new Plane(unit, a.vector("position", Vec3.ZERO), a.material("material"),
                 Transform.IDENTITY, a.objectSpan()));
     }

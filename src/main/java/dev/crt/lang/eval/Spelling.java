@@ -4,11 +4,11 @@ import java.util.Collection;
 import java.util.Locale;
 
 /** "did you mean …?" suggestions: the closest known name within a small edit distance. */
-final class Spelling {
+public final class Spelling {
     private Spelling() {}
 
     /** " (did you mean 'radius'?)" or "" when nothing is close enough. */
-    static String suggestion(String wrong, Collection<String> known) {
+    public static String suggestion(String wrong, Collection<String> known) {
         String best = null;
         int bestDistance = Integer.MAX_VALUE;
         int allowed = Math.max(1, Math.min(3, wrong.length() / 3));

@@ -1,6 +1,7 @@
 package dev.crt.lang.syntax;
 
 import dev.crt.lang.TextPositions;
+import dev.crt.lang.eval.Spelling;
 import dev.crt.lang.parser.CRTParser;
 import dev.crt.scene.SourceSpan;
 import java.util.ArrayList;
@@ -20,6 +21,7 @@ import org.antlr.v4.runtime.misc.IntervalSet;
  */
 final class HumanErrorStrategy extends DefaultErrorStrategy {
     private static final int[] EXPRESSION_STARTS = {CRTParser.INT, CRTParser.IDENT, CRTParser.LPAREN};
+    private static final List<String> MODIFIERS = List.of("translate", "rotate", "scale");
 
     private final TextPositions positions;
 
@@ -27,13 +29,12 @@ final class HumanErrorStrategy extends DefaultErrorStrategy {
 
     @Override
     protected void reportNoViableAlternative(Parser parser, NoViableAltException e) {
-        parser.notifyErrorListeners(e.getOffendingToken(), unexpected(parser, e.getOffendingToken(), null), e);
+        report(parser, e.getOffendingToken(), unexpected(parser, e.getOffendingToken(), null), e);
     }
 
     @Override
     protected void reportInputMismatch(Parser parser, InputMismatchException e) {
-        parser.notifyErrorListeners(e.getOffendingToken(),
-                unexpected(parser, e.getOffendingToken(), e.getExpectedTokens()), e);
+        report(parser, e.getOffendingToken(), unexpected(parser, e.getOffendingToken(), e.getExpectedTokens()), e);
     }
 
     @Override
@@ -41,7 +42,41 @@ final class HumanErrorStrategy extends DefaultErrorStrategy {
         if (inErrorRecoveryMode(parser)) return;
         beginErrorCondition(parser);
         Token token = parser.getCurrentToken();
-        parser.notifyErrorListeners(token, unexpected(parser, token, null), null);
+        report(parser, token, unexpected(parser, token, null), null);
+    }
+
+    private static void report(Parser parser, Token token, String message, org.antlr.v4.runtime.RecognitionException e) {
+        Token word = misspeltModifier(parser, token);
+        if (word != null) {
+            parser.notifyErrorListeners(word, unknownModifier(word.getText()), e);
+        } else {
+            parser.notifyErrorListeners(token, message, e);
+        }
+    }
+
+    private static String unknownModifier(String word) {
+        String suggestion = Spelling.suggestion(word, MODIFIERS);
+        return "unknown modifier '" + word + "'"
+                + (suggestion.isEmpty() ? " (the modifiers are translate, rotate and scale)" : suggestion);
+    }
+
+    /**
+     * `s <rotat vec3(0, 90, 0)>` parses as a comparison with a variable 'rotat' until it fails at
+     * the end; the real mistake is the word after '<', when it is close to a modifier's name.
+     */
+    private static Token misspeltModifier(Parser parser, Token offending) {
+        // The failure comes right after the '>' that was meant to close the modifier list.
+        Token closer = previous(parser, offending);
+        if (closer == null || closer.getType() != CRTParser.GT) return null;
+        org.antlr.v4.runtime.TokenStream tokens = parser.getInputStream();
+        for (int i = closer.getTokenIndex() - 1, seen = 0; i > 0 && seen < 32; i--, seen++) {
+            Token t = tokens.get(i);
+            if (t.getType() == CRTParser.IDENT && tokens.get(i - 1).getType() == CRTParser.LT
+                    && !Spelling.suggestion(t.getText(), MODIFIERS).isEmpty()) {
+                return t;
+            }
+        }
+        return null;
     }
 
     @Override
@@ -54,6 +89,11 @@ final class HumanErrorStrategy extends DefaultErrorStrategy {
         if (expected.size() == 1 && (expected.contains(CRTParser.RPAREN) || expected.contains(CRTParser.RBRACKET)
                 || expected.contains(CRTParser.RBRACE) || expected.contains(CRTParser.GT))) {
             message = unclosed(parser.getContext());
+        }
+        if (message == null && token.getType() == CRTParser.IDENT && expected.contains(CRTParser.SCALE)
+                && expected.contains(CRTParser.TRANSLATE) && expected.contains(CRTParser.ROTATE)) {
+            parser.notifyErrorListeners(token, unknownModifier(token.getText()), null);
+            return;
         }
         if (message == null) message = expectation(parser, expected);
         if (token.getType() != Token.EOF) message += " before " + describe(token);
@@ -71,11 +111,66 @@ final class HumanErrorStrategy extends DefaultErrorStrategy {
             return closes != null ? closes : "unexpected end of file";
         }
         String message = "unexpected " + describe(token);
+        if (isModifierWord(token) && inside(parser.getContext(), CRTParser.ModifiedContext.class)) {
+            // `<translate v scale 2>`: the word is right, the comma before it is missing.
+            return message + "; expected ',' between modifiers";
+        }
         if (isReservedWord(token)) return message + " (it is a reserved word and cannot name a variable)";
+        if (isCloser(token)) {
+            // `<translate v }`: a closer that is not the one the innermost open construct needs.
+            String closes = unclosed(parser.getContext());
+            if (closes != null && !closes.startsWith("expected '" + token.getText() + "'")) return message + "; " + closes;
+        }
+        Token before = previous(parser, token);
+        if (token.getType() == CRTParser.ASSIGN && before != null && isControlWord(before)) {
+            return message + " ('" + before.getText() + "' is a reserved word and cannot name a variable)";
+        }
+        if (token.getType() == CRTParser.ASSIGN) {
+            // `v[0] = 1`, `3 = x`, `Sphere = 1`: values never change, only names are bound.
+            return message + "; only a variable can be assigned, as in 'name = value'";
+        }
+        if (token.getType() == CRTParser.LBRACE && before != null && before.getType() == CRTParser.IDENT) {
+            // `sphere { … }`: an object type written in lowercase.
+            String name = before.getText();
+            return message + " after '" + name + "' (type names start with an uppercase letter: '"
+                    + Character.toUpperCase(name.charAt(0)) + name.substring(1) + "')";
+        }
         if (expected != null && expected.size() == 1 && !expected.contains(CRTParser.RBRACE)) {
             message += "; " + expectation(parser, expected);
         }
         return message;
+    }
+
+    /** The token the parser saw before {@code token}, or null at the start. */
+    private static Token previous(Parser parser, Token token) {
+        org.antlr.v4.runtime.TokenStream tokens = parser.getInputStream();
+        for (int i = token.getTokenIndex() - 1; i >= 0; i--) {
+            Token t = tokens.get(i);
+            if (t.getChannel() == Token.DEFAULT_CHANNEL) return t;
+        }
+        return null;
+    }
+
+    private static boolean isCloser(Token token) {
+        int type = token.getType();
+        return type == CRTParser.RBRACE || type == CRTParser.RPAREN || type == CRTParser.RBRACKET;
+    }
+
+    private static boolean isControlWord(Token token) {
+        int type = token.getType();
+        return type == CRTParser.WHILE || type == CRTParser.IF || type == CRTParser.ELSE;
+    }
+
+    private static boolean isModifierWord(Token token) {
+        int type = token.getType();
+        return type == CRTParser.SCALE || type == CRTParser.TRANSLATE || type == CRTParser.ROTATE;
+    }
+
+    private static boolean inside(ParserRuleContext ctx, Class<? extends ParserRuleContext> kind) {
+        for (ParserRuleContext c = ctx; c != null; c = c.getParent()) {
+            if (kind.isInstance(c)) return true;
+        }
+        return false;
     }
 
     private static boolean isReservedWord(Token token) {
@@ -95,7 +190,8 @@ final class HumanErrorStrategy extends DefaultErrorStrategy {
                 what = "'('";
             } else if (c instanceof CRTParser.CallContext || c instanceof CRTParser.WhileLoopContext
                     || c instanceof CRTParser.IfChainContext) {
-                if (c.getChildCount() > 0 && !")".equals(c.getChild(c.getChildCount() - 1).getText())
+                // Only a '(' that was written needs closing: `if x > 1 {` never opened one.
+                if (has(c, CRTParser.LPAREN) && !")".equals(c.getChild(c.getChildCount() - 1).getText())
                         && !(c.getChild(c.getChildCount() - 1) instanceof CRTParser.BlockContext)) {
                     closer = ")";
                     what = "'('";
@@ -166,8 +262,22 @@ final class HumanErrorStrategy extends DefaultErrorStrategy {
         else if (c instanceof CRTParser.MacroContext) what = "Macro";
         else if (c instanceof CRTParser.BlockContext) what = "the block";
         Token start = c.getStart();
-        if (what == null || start == null) return null;
+        // `x = Sphere` at the end of the file: no brace was opened, so none needs closing.
+        if (what == null || start == null || !opensBrace(c)) return null;
         return what + " opened at " + position(start);
+    }
+
+    private static boolean opensBrace(ParserRuleContext c) { return has(c, CRTParser.LBRACE); }
+
+    private static boolean has(ParserRuleContext c, int tokenType) {
+        for (int i = 0; i < c.getChildCount(); i++) {
+            // An error node is a token the recovery conjured up, not one the script has.
+            if (c.getChild(i) instanceof org.antlr.v4.runtime.tree.TerminalNode t
+                    && !(t instanceof org.antlr.v4.runtime.tree.ErrorNode) && t.getSymbol().getType() == tokenType) {
+                return true;
+            }
+        }
+        return false;
     }
 
     private static String tokenName(Parser parser, int type) {

@@ -145,6 +145,8 @@ public final class ScriptParser {
                 errors.add(token, "unterminated string (a string ends with \" on the line it starts)");
             } else if (token.getType() == CRTLexer.BAD_CHARACTER) {
                 errors.add(token, "unexpected character " + describeCharacter(token.getText()));
+            } else if (token.getType() == CRTLexer.FLOAT && "eE+-".indexOf(token.getText().charAt(token.getText().length() - 1)) >= 0) {
+                errors.add(token, "malformed number '" + token.getText() + "': an exponent needs digits, as in 1e3 or 2.5e-4");
             }
         }
     }

@@ -24,6 +24,13 @@ public record NumberValue(double value, boolean integral) implements Value {
     /** A number as a person writes it: 3, 1.5, -0.25. */
     public static String format(double v) {
         if (v == Math.rint(v) && Math.abs(v) < 1e15) return Long.toString((long) v);
-        return Double.toString(v);
+        // Java's 1.0E22 in the script's own notation: 1e22.
+        return Double.toString(v).replace(".0E", "E").replace('E', 'e');
+    }
+
+    /** A float as a person writes one, with its point even when whole (2.0), so it never reads as an integer. */
+    public static String formatFloat(double v) {
+        String s = format(v);
+        return s.matches("-?\\d+") ? s + ".0" : s;
     }
 }
