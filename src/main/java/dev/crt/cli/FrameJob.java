@@ -10,6 +10,7 @@ import dev.crt.scene.Settings;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.LinkedHashMap;
+import java.util.Locale;
 import java.util.Map;
 
 /** Renders one compiled scene and writes it atomically to an image file: the unit render and animate share. */
@@ -19,7 +20,15 @@ final class FrameJob {
 
     private FrameJob() {}
 
+    /** The largest image rendered: 2^28 pixels, 3 GiB of linear floats. */
+    static final long MAX_PIXELS = 1L << 28;
+
     static Outcome run(Scene scene, Path out, int threads, RenderMonitor monitor) throws CliFailure {
+        int w = scene.settings().width(), h = scene.settings().height();
+        if ((long) w * h > MAX_PIXELS) {
+            throw new CliFailure(ExitCode.USAGE, String.format(Locale.ROOT,
+                    "an image of %d×%d pixels is too large to render (at most %,d pixels)", w, h, MAX_PIXELS));
+        }
         Renderer renderer = Renderer.prepare(scene);
         FrameBuffer image = renderer.render(threads, monitor);
         long start = System.nanoTime();

@@ -99,6 +99,14 @@ public final class Transform {
 
     public Transform inverse() { return new Transform(inv, m); }
 
+    /** True when the matrix and its inverse hold only finite numbers, so the transform can be used and undone. */
+    public boolean isFinite() {
+        for (int i = 0; i < 12; i++) {
+            if (!Double.isFinite(m[i]) || !Double.isFinite(inv[i])) return false;
+        }
+        return true;
+    }
+
     public boolean isIdentity() { return this == IDENTITY || Arrays.equals(m, IDENTITY.m); }
 
     /** True when the linear part is the identity, so the transform only moves things. */

@@ -100,6 +100,15 @@ class RenderCommandTest {
     }
 
     @Test
+    void anImageTooLargeToHoldIsRefusedBeforeRendering() throws IOException {
+        CliRun run = CliRun.of("render", script(SCENE).toString(), "-o", dir.resolve("huge.png").toString(),
+                "--width", "100000", "--height", "100000");
+        assertThat(run.exitCode()).isEqualTo(2);
+        assertThat(run.err()).contains("100000×100000 pixels is too large");
+        assertThat(files()).isEmpty();
+    }
+
+    @Test
     void badOptionValuesAreUsageErrors() throws IOException {
         String s = script(SCENE).toString();
         assertThat(CliRun.of("render", s, "--width", "0").exitCode()).isEqualTo(2);

@@ -105,8 +105,29 @@ public final class Evaluator extends CRTBaseVisitor<Value> {
                     settings.firstBlock() != null ? settings.firstBlock() : positions.span(0, 0));
         }
         List<Entity> entities = new ArrayList<>(placed.size());
-        for (EntityValue e : placed) entities.add(e.entity());
+        for (EntityValue e : placed) {
+            Entity entity = e.entity();
+            Entity degenerate = degenerateTransform(entity, Transform.IDENTITY);
+            if (degenerate != null) {
+                record(Severity.ERROR, "the modifiers of this entity scale it too far for numbers to hold"
+                        + " (its transform cannot be computed or undone)", degenerate.span(), List.of());
+                errors++;
+            }
+            entities.add(entity);
+        }
+        if (errors > 0) return null;
         return new Scene(sourceName, settings.build(), entities);
+    }
+
+    /** The first entity of the tree whose transform to the world overflows or underflows, or null. */
+    private static Entity degenerateTransform(Entity e, Transform toWorld) {
+        Transform t = e.transform().then(toWorld);
+        if (!t.isFinite()) return e;
+        if (e instanceof Csg c) {
+            Entity left = degenerateTransform(c.left(), t);
+            return left != null ? left : degenerateTransform(c.right(), t);
+        }
+        return null;
     }
 
     /** Every diagnostic so far, in source order. */
