@@ -31,7 +31,7 @@ final class AnimationProgress implements AutoCloseable {
 
     static AnimationProgress start(int total, boolean quiet, PrintWriter err) {
         if (quiet || total == 0) return new AnimationProgress(Mode.NONE, Progress.NONE, err, total);
-        if (System.console() != null) {
+        if (Progress.stderrIsTerminal()) {
             return new AnimationProgress(Mode.BAR, Progress.start("Frames", total, "frames", false), err, total);
         }
         return new AnimationProgress(Mode.LINES, Progress.NONE, err, total);

@@ -12,6 +12,7 @@ import java.util.ArrayList;
 import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Set;
+import java.util.regex.Pattern;
 
 /**
  * The files of one animate run on disk: creating their folders, finding frames that exist already
@@ -19,6 +20,9 @@ import java.util.Set;
  * shards sharing a folder never disturb each other's work in progress.
  */
 final class FrameFiles {
+    /** What the writers put after ".tmp-": a non-negative long in lower-case hexadecimal. */
+    private static final Pattern TEMPORARY_SUFFIX = Pattern.compile("[0-9a-f]{1,16}");
+
     private FrameFiles() {}
 
     /** Creates the folders of {@code files} and checks that each takes new files; fails with exit code 3. */
@@ -65,8 +69,11 @@ final class FrameFiles {
             try (DirectoryStream<Path> entries = Files.newDirectoryStream(folder, ".*.tmp-*")) {
                 for (Path entry : entries) {
                     String name = entry.toString();
-                    int cut = name.lastIndexOf(".tmp-");
-                    if (prefixes.contains(name.substring(0, cut + ".tmp-".length())) && Files.deleteIfExists(entry)) removed++;
+                    int cut = name.lastIndexOf(".tmp-") + ".tmp-".length();
+                    if (prefixes.contains(name.substring(0, cut)) && TEMPORARY_SUFFIX.matcher(name.substring(cut)).matches()
+                            && Files.deleteIfExists(entry)) {
+                        removed++;
+                    }
                 }
             } catch (IOException e) {
                 throw new CliFailure(ExitCode.FILE_ERROR, "cannot clean up temporary files in " + folder + ": "

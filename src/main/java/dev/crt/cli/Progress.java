@@ -1,6 +1,9 @@
 package dev.crt.cli;
 
+import java.io.IOException;
 import java.io.PrintStream;
+import java.nio.file.Files;
+import java.nio.file.Path;
 import me.tongfei.progressbar.ConsoleProgressBarConsumer;
 import me.tongfei.progressbar.ProgressBar;
 import me.tongfei.progressbar.ProgressBarBuilder;
@@ -16,7 +19,7 @@ final class Progress implements AutoCloseable {
 
     /** A bar named {@code task} counting to {@code total}, or a silent one when quiet or not on a terminal. */
     static Progress start(String task, long total, String unit, boolean quiet) {
-        if (quiet || System.console() == null) return NONE;
+        if (quiet || !stderrIsTerminal()) return NONE;
         PrintStream err = System.err;
         ProgressBar bar = new ProgressBarBuilder()
                 .setTaskName(task)
@@ -27,6 +30,26 @@ final class Progress implements AutoCloseable {
                 .setConsumer(new ConsoleProgressBarConsumer(err))
                 .build();
         return new Progress(bar);
+    }
+
+    /**
+     * Whether stderr is a terminal. System.console() answers for stdin and stdout instead (and on
+     * newer JDKs is there even when nothing is a terminal), so {@code 2> log} on a terminal would
+     * fill the log with bars; on Linux the descriptor itself says where it goes.
+     */
+    static boolean stderrIsTerminal() {
+        return isTerminal(Path.of("/proc/self/fd/2"));
+    }
+
+    /** Whether the descriptor link {@code fd} leads to a terminal device; elsewhere than Linux, the console decides. */
+    static boolean isTerminal(Path fd) {
+        String target;
+        try {
+            target = Files.readSymbolicLink(fd).toString();
+        } catch (IOException | UnsupportedOperationException | SecurityException e) {
+            return System.console() != null;
+        }
+        return target.startsWith("/dev/pts/") || target.startsWith("/dev/tty") || target.equals("/dev/console");
     }
 
     synchronized void update(long done, long total) {

@@ -19,6 +19,9 @@ final class ScriptOptions {
 
     /** The compile options for the time {@code t}. */
     CompileOptions toCompileOptions(double time) {
+        if (!Double.isFinite(time)) {
+            throw new IllegalArgumentException("--time must be a finite number, got " + time);
+        }
         if (!(timeBudget > 0)) {
             throw new IllegalArgumentException("--time-budget must be a positive number of seconds");
         }

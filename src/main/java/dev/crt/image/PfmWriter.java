@@ -10,17 +10,22 @@ import java.util.Map;
 /** Portable float map: "PF", little-endian (scale −1.0) linear floats, unclamped, rows bottom to top. */
 final class PfmWriter implements ImageWriter {
     static final PfmWriter INSTANCE = new PfmWriter();
+    /** Floats per write. */
+    private static final int PIECE = 1 << 16;
 
     @Override
     public void write(FrameBuffer image, double gamma, Map<String, String> text, OutputStream out) throws IOException {
         int w = image.width(), h = image.height();
         out.write(("PF\n" + w + " " + h + "\n-1.0\n").getBytes(StandardCharsets.US_ASCII));
-        ByteBuffer row = ByteBuffer.allocate(w * 3 * 4).order(ByteOrder.LITTLE_ENDIAN);
+        // A row of a very wide image can hold more bytes than an array: write it in pieces.
+        ByteBuffer piece = ByteBuffer.allocate(4 * Math.min(w * 3, PIECE)).order(ByteOrder.LITTLE_ENDIAN);
         float[] data = image.data();
         for (int y = h - 1; y >= 0; y--) {
-            row.clear();
-            for (int i = y * w * 3, end = i + w * 3; i < end; i++) row.putFloat(data[i]);
-            out.write(row.array(), 0, row.position());
+            for (int i = y * w * 3, end = i + w * 3; i < end; ) {
+                piece.clear();
+                while (i < end && piece.hasRemaining()) piece.putFloat(data[i++]);
+                out.write(piece.array(), 0, piece.position());
+            }
         }
     }
 }

@@ -173,7 +173,18 @@ final class Tracer {
             }
             if (diffuse == 0 && specular == 0) continue;
             double side = nw > 0 ? delta : -delta;
-            double s = transmittance(px + side * nx, py + side * ny, pz + side * nz, wx, wy, wz, dist, i);
+            double ox = px + side * nx, oy = py + side * ny, oz = pz + side * nz;
+            double s;
+            if (l.parallel[i]) {
+                s = transmittance(ox, oy, oz, wx, wy, wz, dist, i);
+            } else {
+                // Aimed from the moved origin at the light itself and stopped short of it by the same
+                // relative margin, so a light lying on a surface is not shadowed by that surface.
+                double sx = l.x[i] - ox, sy = l.y[i] - oy, sz = l.z[i] - oz;
+                double reach = Math.sqrt(sx * sx + sy * sy + sz * sz);
+                double margin = Math.max(delta, OFFSET * Math.max(Math.max(Math.abs(l.x[i]), Math.abs(l.y[i])), Math.abs(l.z[i])));
+                s = reach > margin ? transmittance(ox, oy, oz, sx / reach, sy / reach, sz / reach, reach - margin, i) : 1;
+            }
             if (s == 0) continue;
             double f = s * att;
             r += f * (diffuse * l.r[i] * cr + specular * l.r[i]);

@@ -76,6 +76,11 @@ class CheckCommandTest {
         assertThat(CliRun.of("check").exitCode()).isEqualTo(2);
         assertThat(CliRun.of("check", "--no-such-option", "x.crt").exitCode()).isEqualTo(2);
         assertThat(CliRun.of("check", "--time-budget", "0", "x.crt").exitCode()).isEqualTo(2);
+        for (String time : new String[] {"NaN", "Infinity", "-Infinity"}) {
+            CliRun run = CliRun.of("check", "--time", time, "x.crt");
+            assertThat(run.exitCode()).as(time).isEqualTo(2);
+            assertThat(run.err()).contains("--time must be a finite number, got " + time);
+        }
         assertThat(CliRun.of().exitCode()).isEqualTo(2);
         assertThat(CliRun.of("frobnicate").exitCode()).isEqualTo(2);
     }

@@ -243,4 +243,29 @@ class ShadingTest {
             assertThat(Math.abs(Tracer.power(x, n) - expected)).isLessThanOrEqualTo(1e-13 * expected + Double.MIN_NORMAL);
         }
     }
+
+    /**
+     * A light lying exactly on the floor plane lights the sphere above it: the shadow segment ends on
+     * the floor, it does not cross it (at any scale and distance from the origin).
+     */
+    @Test
+    void aLightLyingOnASurfaceIsNotShadowedByIt() {
+        for (double scale : new double[] {1, 1e-4, 1e4}) {
+            Vec3 q = v(0.3, 0, 0.1).times(scale);
+            Material m = material(rgb(1, 1, 1), 1, 0, 30, 0, 0, 1);
+            // The one pixel looks along the view axis at the sphere's lower half.
+            Settings look = settings(camera(v(0, 0.5, -6).times(scale), v(0, 1.4, 0).times(scale), 10),
+                    List.of(point(q, rgb(1, 1, 1), 0, 0)), Background.BLACK, 1, 1);
+            Vec3 eye = v(0, 0.5, -6).times(scale), d = v(0, 1.4, 0).times(scale).minus(eye).normalize();
+            Vec3 c = v(0, 2, 0).times(scale);
+            double t = Reference.sphereHit(eye, d, c, scale);
+            Vec3 x = eye.plus(d.times(t));
+            Vec3 n = x.minus(c).normalize();
+            FrameBuffer fb = render(scene(look, sphere(c, scale, m),
+                    plane(v(0, 1, 0), Vec3.ZERO, matte(rgb(1, 1, 1)))));
+            double expected = Math.max(0, n.dot(q.minus(x).normalize()));
+            assertThat(expected).as("the point is lit by the formula").isGreaterThan(0.1);
+            assertPixel(fb, 0, 0, rgb(expected, expected, expected));
+        }
+    }
 }

@@ -1,0 +1,49 @@
+package dev.crt.cli;
+
+import static org.assertj.core.api.Assertions.assertThat;
+import static org.junit.jupiter.api.Assumptions.assumeTrue;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.concurrent.TimeUnit;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+class ProgressTest {
+    @TempDir
+    Path dir;
+
+    @Test
+    void aDescriptorIsATerminalWhenItLeadsToATerminalDevice() throws IOException {
+        assumeTrue(Files.isDirectory(Path.of("/proc/self/fd")));
+        assertThat(Progress.isTerminal(Files.createSymbolicLink(dir.resolve("pts"), Path.of("/dev/pts/3")))).isTrue();
+        assertThat(Progress.isTerminal(Files.createSymbolicLink(dir.resolve("tty"), Path.of("/dev/tty1")))).isTrue();
+        Path log = Files.writeString(dir.resolve("log.txt"), "");
+        assertThat(Progress.isTerminal(Files.createSymbolicLink(dir.resolve("file"), log))).isFalse();
+        assertThat(Progress.isTerminal(Files.createSymbolicLink(dir.resolve("pipe"), Path.of("pipe:[4242]")))).isFalse();
+    }
+
+    /** stdin and stdout on a terminal (so System.console() is there) but stderr into a file: no bar in the file. */
+    @Test
+    void noBarGoesToStderrRedirectedToAFileFromATerminal() throws IOException, InterruptedException {
+        assumeTrue(Files.isDirectory(Path.of("/proc/self/fd")) && Files.isExecutable(Path.of("/usr/bin/script")));
+        Path scene = Files.writeString(dir.resolve("s.crt"), """
+                Settings { camera -> Camera { position -> vec3(0, 1, -5) pointing -> vec3(0, 0, 0) } width -> 200 height -> 150 }
+                Scene { Sphere { center -> vec3(0, 0, 0) radius -> 1 } }
+                """);
+        Path err = dir.resolve("err.txt");
+        String java = Path.of(System.getProperty("java.home"), "bin", "java").toString();
+        String command = "'" + java + "' -cp '" + System.getProperty("java.class.path") + "' dev.crt.cli.Main render '"
+                + scene + "' -o '" + dir.resolve("s.png") + "' --threads 1 2>'" + err + "'";
+        Process p = new ProcessBuilder("/usr/bin/script", "-qec", command, "/dev/null")
+                .redirectInput(ProcessBuilder.Redirect.PIPE)
+                .redirectOutput(ProcessBuilder.Redirect.DISCARD)
+                .redirectError(ProcessBuilder.Redirect.DISCARD)
+                .start();
+        p.getOutputStream().close();
+        assertThat(p.waitFor(60, TimeUnit.SECONDS)).isTrue();
+        assumeTrue(p.exitValue() == 0, "script could not run the command on a pseudo-terminal");
+        assertThat(Files.readString(err)).doesNotContain("Rendering").doesNotContain("\r").startsWith("crt: wrote ");
+    }
+}
