@@ -20,14 +20,11 @@ final class FrameJob {
 
     private FrameJob() {}
 
-    /** The largest image rendered: 2^28 pixels, 3 GiB of linear floats. */
-    static final long MAX_PIXELS = 1L << 28;
-
     static Outcome run(Scene scene, Path out, int threads, RenderMonitor monitor) throws CliFailure {
         int w = scene.settings().width(), h = scene.settings().height();
-        if ((long) w * h > MAX_PIXELS) {
+        if ((long) w * h > FrameBuffer.MAX_PIXELS) {
             throw new CliFailure(ExitCode.USAGE, String.format(Locale.ROOT,
-                    "an image of %d×%d pixels is too large to render (at most %,d pixels)", w, h, MAX_PIXELS));
+                    "an image of %d×%d pixels is too large to render (at most %,d pixels)", w, h, FrameBuffer.MAX_PIXELS));
         }
         Renderer renderer = Renderer.prepare(scene);
         FrameBuffer image = renderer.render(threads, monitor);

@@ -2,15 +2,20 @@ package dev.crt.image;
 
 /** A rendered image in linear light: {@code width × height} pixels of three floats, row 0 at the top. */
 public final class FrameBuffer {
+    /** The most pixels an image may have: 2^28, 3 GiB of floats, so every index fits an int. */
+    public static final long MAX_PIXELS = 1L << 28;
+
     private final int width;
     private final int height;
     private final float[] rgb;
 
     public FrameBuffer(int width, int height) {
-        if (width < 1 || height < 1) throw new IllegalArgumentException("bad image size " + width + "x" + height);
+        if (width < 1 || height < 1 || (long) width * height > MAX_PIXELS) {
+            throw new IllegalArgumentException("bad image size " + width + "x" + height);
+        }
         this.width = width;
         this.height = height;
-        this.rgb = new float[Math.multiplyExact(Math.multiplyExact(width, height), 3)];
+        this.rgb = new float[width * height * 3];
     }
 
     public int width() { return width; }
