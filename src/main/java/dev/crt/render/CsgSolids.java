@@ -3,55 +3,100 @@ package dev.crt.render;
 import dev.crt.geom.Aabb;
 import dev.crt.geom.Transform;
 import dev.crt.scene.Csg;
+import dev.crt.scene.CsgOperation;
 import dev.crt.scene.Entity;
 import dev.crt.scene.Primitive;
+import java.util.ArrayDeque;
+import java.util.ArrayList;
 import java.util.Arrays;
+import java.util.List;
 import java.util.function.ToIntFunction;
 
 /**
  * CSG trees flattened for tracing: each tree is a list of primitive leaves (transforms pushed down,
- * T(A op B) = T(A) op T(B)) and a postfix program over their inside-states.
+ * T(A op B) = T(A) op T(B)) under n-ary operation nodes. Chains of one operation are merged into
+ * one node ({@code a + b + c} is one union of three; {@code a - b - c} is a minus the union of b
+ * and c), so a solid built up in a loop is a shallow tree, not a spine as long as the loop.
  *
- * <p>A ray is intersected exactly: every leaf gives the interval where the line is inside it, the
- * interval ends become events sorted by distance, and walking them while re-evaluating the program
- * finds where the line enters or leaves the resulting solid. Events closer together than a tiny
- * scale-relative tolerance count as simultaneous and are applied together, so coincident faces
- * resolve by set semantics (a box minus an identical box is empty; two boxes sharing a face unite
- * without an inner wall). When simultaneous events change the result, the surface shown is the one
- * of the leaf that comes last in the tree (in A − B, B's boundary wins on equal distance).
+ * <p>A ray is intersected exactly: every leaf the line passes through gives the interval where the
+ * line is inside it, the interval ends become events sorted by distance, and walking them while
+ * updating the inside-state of each node finds where the line enters or leaves the solid. A node
+ * keeps a count of its children that are inside, so an event costs the nodes whose state it
+ * changes, not the whole tree. Trees of more than {@value #LINEAR_LIMIT} bounded leaves find the
+ * leaves a line passes through with a BVH of their own, so a ray pays for the leaves near it.
+ *
+ * <p>Events closer together than a tiny scale-relative tolerance count as simultaneous and are
+ * applied together, so coincident faces resolve by set semantics (a box minus an identical box is
+ * empty; two boxes sharing a face unite without an inner wall). When simultaneous events change
+ * the result, the surface shown is the one of the leaf that comes last in the tree (in A − B, B's
+ * boundary wins on equal distance).
  */
 final class CsgSolids {
-    static final int UNION = -1;
-    static final int INTERSECTION = -2;
-    static final int DIFFERENCE = -3;
+    static final int UNION = 0;
+    static final int INTERSECTION = 1;
+    static final int DIFFERENCE = 2;
     /** Relative distance under which boundary events are treated as coincident. */
     static final double TIE = 0x1p-44;
+    /** Bounded leaves up to which a tree tests every leaf instead of walking a BVH over them. */
+    static final int LINEAR_LIMIT = 4;
 
     private int count;
-    int[] leafStart = new int[4], leafCount = new int[4], progStart = new int[4], progLength = new int[4];
-    double[] scale = new double[4];
-    int[] leafShape = new int[8];
-    int[] program = new int[16];
-    private int leafSize, programSize;
-    int maxLeaves;
+    private int[] leafStart = new int[4], leafCount = new int[4], nodeStart = new int[4];
+    /** Per tree: the leaves every line is tested against (all of them, or the unbounded ones when there is a BVH). */
+    private int[] testStart = new int[4], testCount = new int[4];
+    /** Per tree: where its BVH's item order starts in {@link #bvhLeaf}. */
+    private int[] bvhStart = new int[4];
+    private Bvh[] bvh = new Bvh[4];
+    private double[] scale = new double[4];
+
+    /** Per leaf (global index): its shape, its node (tree-local) and whether it is a difference's first operand. */
+    private int[] leafShape = new int[8], leafParent = new int[8];
+    private boolean[] leafPositive = new boolean[8];
+    private int leafSize;
+    /** Per node (global index): operation, number of children, parent (tree-local, −1 at the root), first-operand flag. */
+    private int[] nodeOp = new int[8], nodeChildren = new int[8], nodeParent = new int[8];
+    private boolean[] nodePositive = new boolean[8];
+    private int nodeTotal;
+    /** Tree-local leaf indices: the always-tested lists and the BVH item orders. */
+    private int[] testLeaf = new int[8], bvhLeaf = new int[8];
+    private int testSize, bvhSize;
+
+    int maxLeaves, maxNodes, maxDepth;
 
     /** Flattens {@code csg} placed by {@code parent}; returns its index and its world bounds in {@code bounds[0]}. */
     int add(Csg csg, Transform parent, Shapes shapes, ToIntFunction<Primitive> materials, Aabb[] bounds) {
+        int tree = flatten(csg, parent, shapes, materials, bounds);
+        index(tree, shapes);
+        return tree;
+    }
+
+    /** The world bounds of {@code csg} placed by {@code parent}, its leaves added to {@code shapes}, without preparing it for rays. */
+    Aabb bounds(Csg csg, Transform parent, Shapes shapes, ToIntFunction<Primitive> materials) {
+        Aabb[] out = new Aabb[1];
+        flatten(csg, parent, shapes, materials, out);
+        return out[0];
+    }
+
+    private int flatten(Csg csg, Transform parent, Shapes shapes, ToIntFunction<Primitive> materials, Aabb[] bounds) {
         int tree = count++;
         if (tree == leafStart.length) {
             int n = tree * 2;
             leafStart = Arrays.copyOf(leafStart, n);
             leafCount = Arrays.copyOf(leafCount, n);
-            progStart = Arrays.copyOf(progStart, n);
-            progLength = Arrays.copyOf(progLength, n);
+            nodeStart = Arrays.copyOf(nodeStart, n);
+            testStart = Arrays.copyOf(testStart, n);
+            testCount = Arrays.copyOf(testCount, n);
+            bvhStart = Arrays.copyOf(bvhStart, n);
+            bvh = Arrays.copyOf(bvh, n);
             scale = Arrays.copyOf(scale, n);
         }
         leafStart[tree] = leafSize;
-        progStart[tree] = programSize;
-        Aabb b = flatten(csg, parent, tree, shapes, materials);
-        leafCount[tree] = leafSize - leafStart[tree];
-        progLength[tree] = programSize - progStart[tree];
-        maxLeaves = Math.max(maxLeaves, leafCount[tree]);
+        nodeStart[tree] = nodeTotal;
+        Aabb b = node(csg, parent, tree, -1, false, shapes, materials);
+        int leaves = leafSize - leafStart[tree];
+        leafCount[tree] = leaves;
+        maxLeaves = Math.max(maxLeaves, leaves);
+        maxNodes = Math.max(maxNodes, nodeTotal - nodeStart[tree]);
         double sc = 0;
         for (int k = leafStart[tree]; k < leafSize; k++) sc = Math.max(sc, shapes.scale[leafShape[k]]);
         scale[tree] = sc;
@@ -59,75 +104,262 @@ final class CsgSolids {
         return tree;
     }
 
-    private Aabb flatten(Entity e, Transform parent, int tree, Shapes shapes, ToIntFunction<Primitive> materials) {
-        Transform t = e.transform().then(parent);
-        if (e instanceof Primitive p) {
-            int s = shapes.add(p, t, materials.applyAsInt(p));
-            int local = leafSize - leafStart[tree];
-            if (leafSize == leafShape.length) leafShape = Arrays.copyOf(leafShape, leafSize * 2);
-            leafShape[leafSize++] = s;
-            emit(local);
-            return shapes.bounds(s);
+    /**
+     * Adds a node for {@code c} placed by {@code parent} under tree-local node {@code parentNode},
+     * and its operands below it; returns its bounds. Operands that merge into the node (see
+     * {@link #merges}) are unfolded with a work stack rather than recursion, since scripts build
+     * long chains ({@code u = u + s} in a loop); only nesting of different operations recurses.
+     */
+    private Aabb node(Csg c, Transform parent, int tree, int parentNode, boolean positive, Shapes shapes,
+            ToIntFunction<Primitive> materials) {
+        int op = code(c.operation());
+        int self = newNode(tree, op, parentNode, positive);
+        int counted = nodeStart[tree] + self;
+        ArrayDeque<Entity> todo = new ArrayDeque<>();
+        ArrayDeque<Transform> placement = new ArrayDeque<>();
+        ArrayDeque<Boolean> firsts = new ArrayDeque<>();
+        todo.push(c);
+        placement.push(parent);
+        firsts.push(true);
+        Aabb bounds = null;
+        boolean root = true;
+        while (!todo.isEmpty()) {
+            Entity e = todo.pop();
+            Transform placed = placement.pop();
+            Transform t = e.transform().then(placed);
+            boolean first = firsts.pop();
+            Aabb b;
+            if (e instanceof Csg inner && (root || merges(op, first, code(inner.operation())))) {
+                root = false;
+                // The right operand is pushed first so that leaves keep the script's left-to-right
+                // order. Only a difference's first operand is special, and only its left side can be.
+                todo.push(inner.right());
+                placement.push(t);
+                firsts.push(false);
+                todo.push(inner.left());
+                placement.push(t);
+                firsts.push(first);
+                continue;
+            }
+            nodeChildren[counted]++;
+            if (e instanceof Primitive p) {
+                b = leaf(p, t, self, op == DIFFERENCE && first, shapes, materials);
+            } else {
+                b = node((Csg) e, placed, tree, self, op == DIFFERENCE && first, shapes, materials);
+            }
+            if (op == DIFFERENCE) {
+                if (first) bounds = b;
+            } else {
+                bounds = bounds == null ? b : op == UNION ? bounds.union(b) : bounds.intersection(b);
+            }
         }
-        Csg c = (Csg) e;
-        Aabb a = flatten(c.left(), t, tree, shapes, materials);
-        Aabb b = flatten(c.right(), t, tree, shapes, materials);
-        switch (c.operation()) {
-            case UNION -> {
-                emit(UNION);
-                return a.union(b);
-            }
-            case INTERSECTION -> {
-                emit(INTERSECTION);
-                return a.intersection(b);
-            }
-            default -> {
-                emit(DIFFERENCE);
-                return a;
-            }
-        }
+        return bounds;
     }
 
-    private void emit(int code) {
-        if (programSize == program.length) program = Arrays.copyOf(program, programSize * 2);
-        program[programSize++] = code;
+    /**
+     * Whether an operand of operation {@code inner} merges into a node of operation {@code op}: a
+     * union into a union, an intersection into an intersection, a difference as the first operand
+     * of a difference ((a − b) − c = a − b − c), and a union subtracted by a difference
+     * (a − (b + c) = a − b − c).
+     */
+    private static boolean merges(int op, boolean first, int inner) {
+        if (op != DIFFERENCE) return inner == op;
+        return first ? inner == DIFFERENCE : inner == UNION;
+    }
+
+    private Aabb leaf(Primitive p, Transform t, int parentNode, boolean positive, Shapes shapes,
+            ToIntFunction<Primitive> materials) {
+        int s = shapes.add(p, t, materials.applyAsInt(p));
+        int g = leafSize++;
+        if (g == leafShape.length) {
+            leafShape = Arrays.copyOf(leafShape, 2 * g);
+            leafParent = Arrays.copyOf(leafParent, 2 * g);
+            leafPositive = Arrays.copyOf(leafPositive, 2 * g);
+        }
+        leafShape[g] = s;
+        leafParent[g] = parentNode;
+        leafPositive[g] = positive;
+        return shapes.bounds(s);
+    }
+
+    private int newNode(int tree, int op, int parentNode, boolean positive) {
+        int g = nodeTotal++;
+        if (g == nodeOp.length) {
+            nodeOp = Arrays.copyOf(nodeOp, 2 * g);
+            nodeChildren = Arrays.copyOf(nodeChildren, 2 * g);
+            nodeParent = Arrays.copyOf(nodeParent, 2 * g);
+            nodePositive = Arrays.copyOf(nodePositive, 2 * g);
+        }
+        nodeOp[g] = op;
+        nodeChildren[g] = 0;
+        nodeParent[g] = parentNode;
+        nodePositive[g] = positive;
+        return g - nodeStart[tree];
+    }
+
+    private static int code(CsgOperation operation) {
+        return switch (operation) {
+            case UNION -> UNION;
+            case INTERSECTION -> INTERSECTION;
+            case DIFFERENCE -> DIFFERENCE;
+        };
+    }
+
+    /** Decides how lines find the leaves of {@code tree}: a list, or a BVH over the bounded leaves plus a list of the rest. */
+    private void index(int tree, Shapes shapes) {
+        int first = leafStart[tree], n = leafCount[tree];
+        List<Integer> bounded = new ArrayList<>();
+        List<Integer> always = new ArrayList<>();
+        for (int k = 0; k < n; k++) {
+            Aabb b = shapes.bounds(leafShape[first + k]);
+            if (b.isEmpty()) continue;
+            (b.isFinite() ? bounded : always).add(k);
+        }
+        if (bounded.size() <= LINEAR_LIMIT) {
+            always.addAll(bounded);
+            always.sort(null);
+        } else {
+            int m = bounded.size();
+            double[] flat = new double[6 * m];
+            for (int i = 0; i < m; i++) {
+                Aabb b = shapes.bounds(leafShape[first + bounded.get(i)]);
+                // Widened by an ulp each way, as for the scene's BVH: rounded bounds must not clip the solid.
+                flat[6 * i] = Math.nextDown(b.min().x());
+                flat[6 * i + 1] = Math.nextDown(b.min().y());
+                flat[6 * i + 2] = Math.nextDown(b.min().z());
+                flat[6 * i + 3] = Math.nextUp(b.max().x());
+                flat[6 * i + 4] = Math.nextUp(b.max().y());
+                flat[6 * i + 5] = Math.nextUp(b.max().z());
+            }
+            int[] order = new int[m];
+            Bvh h = BvhBuilder.build(flat, m, order);
+            bvh[tree] = h;
+            maxDepth = Math.max(maxDepth, h.depth);
+            bvhStart[tree] = bvhSize;
+            if (bvhSize + m > bvhLeaf.length) bvhLeaf = Arrays.copyOf(bvhLeaf, Math.max(2 * bvhLeaf.length, bvhSize + m));
+            for (int i = 0; i < m; i++) bvhLeaf[bvhSize++] = bounded.get(order[i]);
+        }
+        testStart[tree] = testSize;
+        testCount[tree] = always.size();
+        if (testSize + always.size() > testLeaf.length) {
+            testLeaf = Arrays.copyOf(testLeaf, Math.max(2 * testLeaf.length, testSize + always.size()));
+        }
+        for (int k : always) testLeaf[testSize++] = k;
     }
 
     /** Per-thread working memory for walking the events of one tree. */
     static final class Scratch {
-        final boolean[] inside;
-        final boolean[] stack;
+        final boolean[] leafInside;
+        /** Per tree-local node: children inside (a difference's first operand not counted), first operand inside. */
+        final int[] inside;
+        final boolean[] firstInside;
+        /** The walk that last reset each node: nodes are reset when first touched, not all before every walk. */
+        final int[] stamp;
+        int walk;
+        final int[] startInside;
         final double[] eventT;
         final int[] eventLeaf;
         final int[] eventFace;
         final boolean[] eventEntry;
+        final int[] stack;
+        int starts;
 
-        Scratch(int maxLeaves) {
-            int n = Math.max(1, maxLeaves);
-            inside = new boolean[n];
-            stack = new boolean[n + 1];
+        Scratch(CsgSolids csg) {
+            int n = Math.max(1, csg.maxLeaves);
+            int m = Math.max(1, csg.maxNodes);
+            leafInside = new boolean[n];
+            inside = new int[m];
+            firstInside = new boolean[m];
+            stamp = new int[m];
+            startInside = new int[n];
             eventT = new double[2 * n];
             eventLeaf = new int[2 * n];
             eventFace = new int[2 * n];
             eventEntry = new boolean[2 * n];
+            stack = new int[Math.max(1, 2 * csg.maxDepth)];
+        }
+
+        /** Starts a walk: every node reads as empty (all leaves outside) until touched. */
+        void begin() {
+            if (++walk == 0) {
+                Arrays.fill(stamp, 0);
+                walk = 1;
+            }
         }
     }
 
-    /** Collects and sorts the boundary events of {@code tree} along the ray; sets the inside-states at t = −∞. */
-    private int gather(int tree, Ray ray, Shapes shapes, LineSpan span, Scratch sc) {
-        int first = leafStart[tree], n = leafCount[tree];
+    /**
+     * Collects and sorts the boundary events of {@code tree} along the line, for the leaves the
+     * line passes through before {@code tMax}; returns the number of events. The leaves the line
+     * starts in (at t = −∞) are listed in {@code sc.startInside}, {@code sc.starts} of them.
+     */
+    private int gather(int tree, Ray ray, double tMax, Shapes shapes, LineSpan span, Scratch sc) {
         int events = 0;
-        for (int k = 0; k < n; k++) {
-            boolean hit = shapes.span(leafShape[first + k], ray, span);
-            sc.inside[k] = hit && span.tIn == Double.NEGATIVE_INFINITY;
-            if (!hit) continue;
-            if (span.tIn != Double.NEGATIVE_INFINITY) events = insert(sc, events, span.tIn, k, span.faceIn, true);
-            if (span.tOut != Double.POSITIVE_INFINITY) events = insert(sc, events, span.tOut, k, span.faceOut, false);
+        sc.starts = 0;
+        for (int i = testStart[tree], end = i + testCount[tree]; i < end; i++) {
+            events = gatherLeaf(tree, testLeaf[i], ray, shapes, span, sc, events);
         }
+        Bvh h = bvh[tree];
+        if (h == null || !line(h.root, 0, ray, tMax)) return events;
+        int[] stack = sc.stack;
+        int top = 0;
+        int node = 0;
+        int base = bvhStart[tree];
+        while (true) {
+            if (Bvh.isLeaf(node)) {
+                for (int p = Bvh.leafFirst(node), end = p + Bvh.leafCount(node); p < end; p++) {
+                    events = gatherLeaf(tree, bvhLeaf[base + p], ray, shapes, span, sc, events);
+                }
+            } else {
+                int left = h.children[2 * node], right = h.children[2 * node + 1];
+                boolean l = line(h.box, 12 * node, ray, tMax), r = line(h.box, 12 * node + 6, ray, tMax);
+                if (l) {
+                    if (r) stack[top++] = right;
+                    node = left;
+                    continue;
+                }
+                if (r) {
+                    node = right;
+                    continue;
+                }
+            }
+            if (top == 0) return events;
+            node = stack[--top];
+        }
+    }
+
+    /** The events of tree-local leaf {@code k}, inserted among the {@code events} already sorted. */
+    private int gatherLeaf(int tree, int k, Ray ray, Shapes shapes, LineSpan span, Scratch sc, int events) {
+        sc.leafInside[k] = false;
+        if (!shapes.span(leafShape[leafStart[tree] + k], ray, span)) return events;
+        if (span.tIn == Double.NEGATIVE_INFINITY) sc.startInside[sc.starts++] = k;
+        else events = insert(sc, events, span.tIn, k, span.faceIn, true);
+        if (span.tOut != Double.POSITIVE_INFINITY) events = insert(sc, events, span.tOut, k, span.faceOut, false);
         return events;
     }
 
-    /** Insertion into the sorted event list; equal distances keep leaf order, so ties are deterministic. */
+    /**
+     * Whether the line passes through the box at {@code k} in {@code b} for some t &lt; tMax (any
+     * t below 0 included: leaves behind the origin decide whether it starts inside). A slab the
+     * line runs exactly along gives NaN, which the comparisons ignore (conservatively a hit).
+     */
+    private static boolean line(double[] b, int k, Ray r, double tMax) {
+        double near = Double.NEGATIVE_INFINITY, far = tMax;
+        double t0 = (b[k + r.nearX] - r.ox) * r.ix, t1 = (b[k + 3 - r.nearX] - r.ox) * r.ix;
+        if (t0 > near) near = t0;
+        if (t1 < far) far = t1;
+        t0 = (b[k + 1 + r.nearY] - r.oy) * r.iy;
+        t1 = (b[k + 4 - r.nearY] - r.oy) * r.iy;
+        if (t0 > near) near = t0;
+        if (t1 < far) far = t1;
+        t0 = (b[k + 2 + r.nearZ] - r.oz) * r.iz;
+        t1 = (b[k + 5 - r.nearZ] - r.oz) * r.iz;
+        if (t0 > near) near = t0;
+        if (t1 < far) far = t1;
+        return near <= far;
+    }
+
+    /** Insertion into the sorted event list; equal distances keep the order of insertion. */
     private static int insert(Scratch sc, int n, double t, int leaf, int face, boolean entry) {
         int i = n;
         while (i > 0 && sc.eventT[i - 1] > t) {
@@ -144,20 +376,44 @@ final class CsgSolids {
         return n + 1;
     }
 
-    private boolean evaluate(int tree, Scratch sc) {
-        int p = progStart[tree], end = p + progLength[tree];
-        boolean[] st = sc.stack;
-        int top = 0;
-        for (; p < end; p++) {
-            int code = program[p];
-            if (code >= 0) {
-                st[top++] = sc.inside[code];
-            } else {
-                boolean b = st[--top], a = st[top - 1];
-                st[top - 1] = code == UNION ? a | b : code == INTERSECTION ? a & b : a & !b;
+    /** Whether tree-local node {@code v} (already reset for this walk) contains the point the walk is at. */
+    private boolean state(int g, int v, Scratch sc) {
+        int in = sc.inside[v];
+        return switch (nodeOp[g]) {
+            case UNION -> in > 0;
+            case INTERSECTION -> in == nodeChildren[g];
+            default -> sc.firstInside[v] && in == 0;
+        };
+    }
+
+    /** Flips tree-local leaf {@code k} in or out and carries the change up as far as it changes nodes. */
+    private void flip(int tree, int k, Scratch sc) {
+        boolean now = sc.leafInside[k] ^= true;
+        int g = leafStart[tree] + k;
+        int v = leafParent[g];
+        boolean first = leafPositive[g];
+        int base = nodeStart[tree];
+        while (v >= 0) {
+            int gv = base + v;
+            if (sc.stamp[v] != sc.walk) {
+                sc.stamp[v] = sc.walk;
+                sc.inside[v] = 0;
+                sc.firstInside[v] = false;
             }
+            boolean before = state(gv, v, sc);
+            if (first) sc.firstInside[v] = now;
+            else sc.inside[v] += now ? 1 : -1;
+            boolean after = state(gv, v, sc);
+            if (after == before) return;
+            now = after;
+            first = nodePositive[gv];
+            v = nodeParent[gv];
         }
-        return st[0];
+    }
+
+    /** Whether the point the walk is at is inside the whole tree. */
+    private boolean rootState(int tree, Scratch sc) {
+        return sc.stamp[0] == sc.walk && state(nodeStart[tree], 0, sc);
     }
 
     /**
@@ -187,8 +443,10 @@ final class CsgSolids {
      */
     private double walk(int tree, Ray ray, double tMax, Hit hit, Shapes shapes, Materials materials, LineSpan span,
             Scratch sc) {
-        int n = gather(tree, ray, shapes, span, sc);
+        int n = gather(tree, ray, tMax, shapes, span, sc);
         if (n == 0) return hit == null ? 1 : 0;
+        sc.begin();
+        for (int i = 0; i < sc.starts; i++) flip(tree, sc.startInside[i], sc);
         double o = Math.max(Math.abs(ray.ox), Math.max(Math.abs(ray.oy), Math.abs(ray.oz)));
         double tol = TIE * (o + scale[tree]);
         boolean known = false, state = false;
@@ -198,18 +456,18 @@ final class CsgSolids {
             double t0 = sc.eventT[i];
             if (t0 >= tMax) break;
             if (t0 > 0 && !known) {
-                state = evaluate(tree, sc);
+                state = rootState(tree, sc);
                 known = true;
             }
             double limit = t0 + tol + TIE * Math.abs(t0);
             int shown = i;
             int j = i;
             for (; j < n && sc.eventT[j] <= limit; j++) {
-                sc.inside[sc.eventLeaf[j]] ^= true;
+                flip(tree, sc.eventLeaf[j], sc);
                 if (sc.eventLeaf[j] >= sc.eventLeaf[shown]) shown = j;
             }
             if (known) {
-                boolean now = evaluate(tree, sc);
+                boolean now = rootState(tree, sc);
                 if (now != state && sc.eventT[shown] < tMax) {
                     int shape = leafShape[leafStart[tree] + sc.eventLeaf[shown]];
                     if (hit != null) {

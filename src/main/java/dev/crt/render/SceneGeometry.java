@@ -47,8 +47,7 @@ final class SceneGeometry {
                 s = firstShapes.add(p, p.transform(), 0);
                 b = firstShapes.bounds(s);
             } else {
-                probeCsg.add((Csg) e, Transform.IDENTITY, firstShapes, q -> probeMaterials.indexOf(q.material()), out);
-                b = out[0];
+                b = probeCsg.bounds((Csg) e, Transform.IDENTITY, firstShapes, q -> probeMaterials.indexOf(q.material()));
             }
             if (b.isEmpty()) continue;
             if (s >= 0) firstShapes.material[s] = materials.indexOf(((Primitive) e).material());

@@ -64,7 +64,7 @@ final class Tracer {
         this.children = bvh == null ? null : bvh.children;
         this.lights = lights;
         this.background = background;
-        csgScratch = new CsgSolids.Scratch(csg.maxLeaves);
+        csgScratch = new CsgSolids.Scratch(csg);
         lastOccluder = new int[lights.count];
         java.util.Arrays.fill(lastOccluder, NONE);
         int depth = bvh == null ? 1 : bvh.depth + 2;

@@ -4,6 +4,7 @@ import static dev.crt.render.Reference.assertNoNaN;
 import static dev.crt.render.Reference.assertPixel;
 import static dev.crt.render.Scenes.*;
 import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.within;
 
 import dev.crt.geom.Transform;
 import dev.crt.geom.Vec3;
@@ -177,5 +178,53 @@ class CsgRenderTest {
             }
         }
         assertThat(face).isGreaterThan(200);
+    }
+
+    /**
+     * A union of opaque balls shows exactly what the balls show placed one by one (only inner
+     * surfaces differ, and those are hidden). 200,000 operands, chained the way a script's loop
+     * chains them, to the left ({@code u = u + s}) and to the right ({@code u = s + u}), and
+     * subtracted as a group ({@code slab - (s + (s + …))}): far deeper than a recursive walk of
+     * the tree survives on a test thread's stack.
+     */
+    @Test
+    void unionsOfTwoHundredThousandBallsRenderLikeTheBallsThemselves() {
+        int n = 200_000, side = 447;
+        List<Entity> balls = new java.util.ArrayList<>(n);
+        for (int k = 0; k < n; k++) {
+            balls.add(sphere(v(k % side - side / 2.0, 0, k / side - side / 2.0).times(0.1), 0.07, matte(RED)));
+        }
+        Entity left = balls.get(0), right = balls.get(0);
+        for (int k = 1; k < n; k++) {
+            left = csg(CsgOperation.UNION, left, balls.get(k));
+            right = csg(CsgOperation.UNION, balls.get(k), right);
+        }
+        Vec3 eye = v(3, 4, -6);
+        Settings s = eyeLit(eye, v(0, 0, 0));
+        FrameBuffer separate = Renderer.prepare(new dev.crt.scene.Scene("balls", s, balls)).render(2, RenderMonitor.NONE);
+        for (Entity union : List.of(left, right)) {
+            FrameBuffer fb = render(s, union);
+            int lit = 0;
+            for (int j = 0; j < fb.height(); j++) {
+                for (int i = 0; i < fb.width(); i++) {
+                    for (int c = 0; c < 3; c++) {
+                        assertThat((double) fb.get(i, j, c)).as("pixel %d,%d", i, j).isCloseTo(separate.get(i, j, c), within(1e-9));
+                    }
+                    if (fb.get(i, j, 0) > 0) lit++;
+                }
+            }
+            assertThat(lit).as("pixels showing balls").isGreaterThan(fb.width() * fb.height() / 4);
+        }
+        // A slab with every ball cut out of its top face: where a ball was, the cut shows inside walls.
+        Entity slab = box(v(-30, -1, -30), v(30, 0, 30), matte(GREEN));
+        FrameBuffer cut = render(s, csg(CsgOperation.DIFFERENCE, slab, right));
+        FrameBuffer plain = render(s, slab);
+        int differ = 0;
+        for (int j = 0; j < cut.height(); j++) {
+            for (int i = 0; i < cut.width(); i++) {
+                if (Math.abs(cut.get(i, j, 1) - plain.get(i, j, 1)) > 1e-6) differ++;
+            }
+        }
+        assertThat(differ).as("pixels where the cut shows").isGreaterThan(cut.width() * cut.height() / 8);
     }
 }
