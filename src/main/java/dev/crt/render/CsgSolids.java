@@ -37,6 +37,14 @@ final class CsgSolids {
     static final int DIFFERENCE = 2;
     /** Relative distance under which boundary events are treated as coincident. */
     static final double TIE = 0x1p-44;
+    /**
+     * How far behind the origin, in tie tolerances, a leaf's box must end for the leaf to be
+     * skipped: such a leaf is entered and left before the ray starts, so it cannot change what the
+     * ray meets. Skipping only leaves this far back keeps the grouping of simultaneous events near
+     * the origin as if every leaf had been walked, short of 2^24 events in a row each within a
+     * tolerance of the next.
+     */
+    static final double BEHIND = 0x1p24;
     /** Bounded leaves up to which a tree tests every leaf instead of walking a BVH over them. */
     static final int LINEAR_LIMIT = 4;
 
@@ -289,18 +297,19 @@ final class CsgSolids {
     }
 
     /**
-     * Collects and sorts the boundary events of {@code tree} along the line, for the leaves the
-     * line passes through before {@code tMax}; returns the number of events. The leaves the line
+     * Collects and sorts the boundary events of {@code tree} along the line, for the leaves
+     * always tested and those whose boxes the line passes through between {@code tMin} and
+     * {@code tMax}; returns the number of events. The leaves the line
      * starts in (at t = −∞) are listed in {@code sc.startInside}, {@code sc.starts} of them.
      */
-    private int gather(int tree, Ray ray, double tMax, Shapes shapes, LineSpan span, Scratch sc) {
+    private int gather(int tree, Ray ray, double tMin, double tMax, Shapes shapes, LineSpan span, Scratch sc) {
         int events = 0;
         sc.starts = 0;
         for (int i = testStart[tree], end = i + testCount[tree]; i < end; i++) {
             events = gatherLeaf(tree, testLeaf[i], ray, shapes, span, sc, events);
         }
         Bvh h = bvh[tree];
-        if (h == null || !line(h.root, 0, ray, tMax)) return events;
+        if (h == null || !line(h.root, 0, ray, tMin, tMax)) return events;
         int[] stack = sc.stack;
         int top = 0;
         int node = 0;
@@ -312,7 +321,7 @@ final class CsgSolids {
                 }
             } else {
                 int left = h.children[2 * node], right = h.children[2 * node + 1];
-                boolean l = line(h.box, 12 * node, ray, tMax), r = line(h.box, 12 * node + 6, ray, tMax);
+                boolean l = line(h.box, 12 * node, ray, tMin, tMax), r = line(h.box, 12 * node + 6, ray, tMin, tMax);
                 if (l) {
                     if (r) stack[top++] = right;
                     node = left;
@@ -339,12 +348,11 @@ final class CsgSolids {
     }
 
     /**
-     * Whether the line passes through the box at {@code k} in {@code b} for some t &lt; tMax (any
-     * t below 0 included: leaves behind the origin decide whether it starts inside). A slab the
-     * line runs exactly along gives NaN, which the comparisons ignore (conservatively a hit).
+     * Whether the line passes through the box at {@code k} in {@code b} for some tMin ≤ t ≤ tMax.
+     * A slab the line runs exactly along gives NaN, which the comparisons ignore (conservatively a hit).
      */
-    private static boolean line(double[] b, int k, Ray r, double tMax) {
-        double near = Double.NEGATIVE_INFINITY, far = tMax;
+    private static boolean line(double[] b, int k, Ray r, double tMin, double tMax) {
+        double near = tMin, far = tMax;
         double t0 = (b[k + r.nearX] - r.ox) * r.ix, t1 = (b[k + 3 - r.nearX] - r.ox) * r.ix;
         if (t0 > near) near = t0;
         if (t1 < far) far = t1;
@@ -443,12 +451,12 @@ final class CsgSolids {
      */
     private double walk(int tree, Ray ray, double tMax, Hit hit, Shapes shapes, Materials materials, LineSpan span,
             Scratch sc) {
-        int n = gather(tree, ray, tMax, shapes, span, sc);
+        double o = Math.max(Math.abs(ray.ox), Math.max(Math.abs(ray.oy), Math.abs(ray.oz)));
+        double tol = TIE * (o + scale[tree]);
+        int n = gather(tree, ray, -BEHIND * tol, tMax, shapes, span, sc);
         if (n == 0) return hit == null ? 1 : 0;
         sc.begin();
         for (int i = 0; i < sc.starts; i++) flip(tree, sc.startInside[i], sc);
-        double o = Math.max(Math.abs(ray.ox), Math.max(Math.abs(ray.oy), Math.abs(ray.oz)));
-        double tol = TIE * (o + scale[tree]);
         boolean known = false, state = false;
         double product = 1;
         int i = 0;
