@@ -127,7 +127,7 @@ final class AnimationRun {
         if (result.hasErrors()) text.append("crt: frame ").append(frame.number()).append(" (t = ").append(frame.number()).append("):\n");
         for (Diagnostic d : result.diagnostics()) {
             String formatted = DiagnosticFormatter.format(d, source.text());
-            if (d.isError() || warningsShown.add(formatted)) text.append(formatted).append('\n');
+            if (!d.isWarning() || warningsShown.add(formatted)) text.append(formatted).append('\n');
         }
         if (text.length() == 0) return;
         synchronized (err) {

@@ -13,5 +13,5 @@ public record CompileResult(Scene scene, List<Diagnostic> diagnostics) {
 
     public long errorCount() { return diagnostics.stream().filter(Diagnostic::isError).count(); }
 
-    public long warningCount() { return diagnostics.size() - errorCount(); }
+    public long warningCount() { return diagnostics.stream().filter(Diagnostic::isWarning).count(); }
 }

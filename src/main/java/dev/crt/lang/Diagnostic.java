@@ -14,4 +14,6 @@ public record Diagnostic(Severity severity, String message, SourceSpan span, Lis
     }
 
     public boolean isError() { return severity == Severity.ERROR; }
+
+    public boolean isWarning() { return severity == Severity.WARNING; }
 }

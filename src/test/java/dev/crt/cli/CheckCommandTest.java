@@ -43,6 +43,15 @@ class CheckCommandTest {
     }
 
     @Test
+    void theTooManyErrorsNoteIsPrintedButNotCounted() throws IOException {
+        Path bad = script("many.crt", "x = ]\n".repeat(25));
+        CliRun run = CliRun.of("check", bad.toString());
+        assertThat(run.exitCode()).isEqualTo(1);
+        assertThat(run.err()).contains(bad + ":20:5: note: too many errors; stopped after 20");
+        assertThat(run.out()).isEqualTo(bad + ": 20 errors, 0 warnings" + System.lineSeparator());
+    }
+
+    @Test
     void warningsDoNotFailTheCheck() throws IOException {
         Path noScene = script("empty.crt", "x = 1\n");
         CliRun run = CliRun.of("check", noScene.toString());

@@ -22,6 +22,19 @@ class DiagnosticsTest {
     }
 
     @Test
+    void evaluationStopsAfterTwentyErrorsWithANoteThatIsNotCountedAsAnError() {
+        CompileResult r = Scripts.compile(CAMERA + "x = 1 + true\n".repeat(25) + "Scene { }\n");
+        assertThat(r.scene()).isNull();
+        assertThat(r.hasErrors()).isTrue();
+        assertThat(r.errorCount()).isEqualTo(20);
+        assertThat(r.warningCount()).isZero();
+        List<Diagnostic> all = r.diagnostics();
+        assertThat(all).hasSize(21);
+        assertThat(all.get(20).severity()).isEqualTo(Severity.NOTE);
+        at(all.get(20), 21, 5, "too many errors; stopped after 20");
+    }
+
+    @Test
     void unknownTypeSuggestsTheClosest() {
         at(error("s = Sphre { radius -> 1 }\n"), 1, 5, "unknown type 'Sphre' (did you mean 'Sphere'?)");
     }

@@ -37,10 +37,17 @@ class SyntaxErrorsTest {
     }
 
     @Test
-    void atMostTwentyErrorsAreReported() {
-        List<Diagnostic> es = errors("x = ]\n".repeat(50));
-        assertThat(es).hasSize(21);
-        assertThat(es.get(20).message()).isEqualTo("too many errors; stopped after 20");
+    void atMostTwentyErrorsAreReportedThenANoteSaysWhereItStopped() {
+        CompileResult r = Scripts.compile("x = ]\n".repeat(25));
+        assertThat(r.scene()).isNull();
+        assertThat(r.hasErrors()).isTrue();
+        assertThat(r.errorCount()).isEqualTo(20);
+        assertThat(r.warningCount()).isZero();
+        List<Diagnostic> all = r.diagnostics();
+        assertThat(all).hasSize(21);
+        assertThat(all.subList(0, 20)).allSatisfy(d -> assertThat(d.severity()).isEqualTo(Severity.ERROR));
+        assertThat(all.get(20).severity()).isEqualTo(Severity.NOTE);
+        at(all.get(20), 20, 5, "too many errors; stopped after 20");
     }
 
     @Test

@@ -95,8 +95,8 @@ public final class Evaluator extends CRTBaseVisitor<Value> {
         try {
             while (statements.hasNext()) runRecovering(statements.next(), Place.TOP, null);
         } catch (EvaluationStopped stop) {
-            record(Severity.ERROR, stop.getMessage(), stop.span(), stop.callChain());
-            errors++;
+            record(stop.severity(), stop.getMessage(), stop.span(), stop.callChain());
+            if (stop.severity() == Severity.ERROR) errors++;
         }
         if (errors > 0) return null;
         if (!sawScene) warn("no Scene block: the picture shows only the background", positions.span(0, 0));
@@ -903,7 +903,7 @@ public final class Evaluator extends CRTBaseVisitor<Value> {
     void report(ScriptError e) {
         record(Severity.ERROR, e.getMessage(), e.span(), e.callChain());
         if (++errors >= MAX_ERRORS) {
-            throw new EvaluationStopped("too many errors; stopped after " + MAX_ERRORS, e.span(), List.of());
+            throw EvaluationStopped.tooManyErrors(MAX_ERRORS, e.span());
         }
     }
 

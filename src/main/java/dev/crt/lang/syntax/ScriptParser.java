@@ -181,7 +181,7 @@ public final class ScriptParser {
         if (sorted.size() <= MAX_ERRORS) return sorted;
         List<Diagnostic> kept = new ArrayList<>(sorted.subList(0, MAX_ERRORS));
         Diagnostic last = kept.get(MAX_ERRORS - 1);
-        kept.add(new Diagnostic(Severity.ERROR, "too many errors; stopped after " + MAX_ERRORS, last.span(), List.of()));
+        kept.add(new Diagnostic(Severity.NOTE, "too many errors; stopped after " + MAX_ERRORS, last.span(), List.of()));
         return kept;
     }
 }
