@@ -22,7 +22,7 @@ import org.knowm.xchart.style.markers.SeriesMarkers;
  * <pre>
  *   java -cp XCHART_CLASSPATH bench/charts/BenchCharts.java RESULTS_DIR IMAGES_DIR
  * </pre>
- * Writes bench-povray.png, bench-scaling.png and bench-mrays.png into IMAGES_DIR.
+ * Writes bench-povray.png, bench-scaling.png, bench-mrays.png and bench-csg.png into IMAGES_DIR.
  */
 public final class BenchCharts {
     private static final Color CRT = new Color(0x2b, 0x6c, 0xb0);
@@ -51,6 +51,28 @@ public final class BenchCharts {
         } else {
             System.err.println("no " + scaling + ": run bench/scaling.sh first");
         }
+        Path csg = results.resolve("csg-scaling.csv");
+        Path before = results.resolve("csg-scaling-before.csv");
+        if (Files.exists(csg) && Files.exists(before)) {
+            csg(read(csg), read(before), images.resolve("bench-csg.png"));
+        } else {
+            System.err.println("no " + csg + " or " + before + ": see docs/benchmarks.md, section 4");
+        }
+    }
+
+    /** Render time of the dimpled plate against the number of balls, before and after the CSG rework. */
+    private static void csg(List<String[]> rows, List<String[]> before, Path file) throws IOException {
+        XYChart chart = new XYChartBuilder().width(800).height(450)
+                .title("Plate minus a union of n balls, 640x360: render time")
+                .xAxisTitle("balls in the union (log scale)").yAxisTitle("seconds (log scale)").build();
+        chart.getStyler().setXAxisLogarithmic(true);
+        chart.getStyler().setYAxisLogarithmic(true);
+        chart.getStyler().setLegendPosition(Styler.LegendPosition.InsideNW);
+        chart.getStyler().setChartBackgroundColor(Color.WHITE);
+        chart.getStyler().setXAxisDecimalPattern("#,###");
+        series(chart, "every operand tested (before)", column(before, 0), column(before, 3), POVRAY);
+        series(chart, "n-ary nodes and a BVH over the operands", column(rows, 0), column(rows, 3), CRT);
+        save(chart, file);
     }
 
     /** Whole-process time of each run and the median, CRT beside POV-Ray. */
