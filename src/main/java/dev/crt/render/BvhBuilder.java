@@ -192,18 +192,34 @@ final class BvhBuilder {
             cmin[a] = Double.POSITIVE_INFINITY;
             cmax[a] = Double.NEGATIVE_INFINITY;
         }
+        double cminX = Double.POSITIVE_INFINITY, cminY = Double.POSITIVE_INFINITY, cminZ = Double.POSITIVE_INFINITY;
+        double cmaxX = Double.NEGATIVE_INFINITY, cmaxY = Double.NEGATIVE_INFINITY, cmaxZ = Double.NEGATIVE_INFINITY;
+        // Comparisons rather than Math.min and Math.max, which also order −0 and NaN: item bounds
+        // are finite, and these loops run over every item at every level of the tree.
+        double[] bounds = this.bounds, centroid = this.centroid;
         for (int i = lo; i < hi; i++) {
-            minX = Math.min(minX, bounds[6 * i]);
-            minY = Math.min(minY, bounds[6 * i + 1]);
-            minZ = Math.min(minZ, bounds[6 * i + 2]);
-            maxX = Math.max(maxX, bounds[6 * i + 3]);
-            maxY = Math.max(maxY, bounds[6 * i + 4]);
-            maxZ = Math.max(maxZ, bounds[6 * i + 5]);
-            for (int a = 0; a < 3; a++) {
-                cmin[a] = Math.min(cmin[a], centroid[3 * i + a]);
-                cmax[a] = Math.max(cmax[a], centroid[3 * i + a]);
-            }
+            int k = 6 * i;
+            double v;
+            if ((v = bounds[k]) < minX) minX = v;
+            if ((v = bounds[k + 1]) < minY) minY = v;
+            if ((v = bounds[k + 2]) < minZ) minZ = v;
+            if ((v = bounds[k + 3]) > maxX) maxX = v;
+            if ((v = bounds[k + 4]) > maxY) maxY = v;
+            if ((v = bounds[k + 5]) > maxZ) maxZ = v;
+            int c = 3 * i;
+            if ((v = centroid[c]) < cminX) cminX = v;
+            if (v > cmaxX) cmaxX = v;
+            if ((v = centroid[c + 1]) < cminY) cminY = v;
+            if (v > cmaxY) cmaxY = v;
+            if ((v = centroid[c + 2]) < cminZ) cminZ = v;
+            if (v > cmaxZ) cmaxZ = v;
         }
+        cmin[0] = cminX;
+        cmin[1] = cminY;
+        cmin[2] = cminZ;
+        cmax[0] = cmaxX;
+        cmax[1] = cmaxY;
+        cmax[2] = cmaxZ;
         box[at] = minX;
         box[at + 1] = minY;
         box[at + 2] = minZ;
@@ -221,19 +237,34 @@ final class BvhBuilder {
             double extent = cmax[axis] - cmin[axis];
             scale[axis] = extent > 0 ? BINS / extent : 0;
         }
-        for (int axis = 0; axis < 3; axis++) {
-            // An axis on which all centroids coincide offers no split.
-            if (scale[axis] == 0) continue;
-            double min = cmin[axis], k = scale[axis];
-            int base = axis * BINS, mask = 0;
-            for (int i = lo; i < hi; i++) {
-                int bin = bin(centroid[3 * i + axis], min, k);
-                mask |= 1 << bin;
-                binCount[base + bin]++;
-                grow(binBox, base + bin, bounds, i);
+        // One pass bins every item on all three axes at once, so the item data is read once.
+        double kx = scale[0], ky = scale[1], kz = scale[2];
+        double mx = cmin[0], my = cmin[1], mz = cmin[2];
+        int maskX = 0, maskY = 0, maskZ = 0;
+        for (int i = lo; i < hi; i++) {
+            int c = 3 * i;
+            if (kx != 0) {
+                int bin = bin(centroid[c], mx, kx);
+                maskX |= 1 << bin;
+                binCount[bin]++;
+                grow(binBox, bin, bounds, i);
             }
-            used[axis] = mask;
+            if (ky != 0) {
+                int bin = bin(centroid[c + 1], my, ky);
+                maskY |= 1 << bin;
+                binCount[BINS + bin]++;
+                grow(binBox, BINS + bin, bounds, i);
+            }
+            if (kz != 0) {
+                int bin = bin(centroid[c + 2], mz, kz);
+                maskZ |= 1 << bin;
+                binCount[2 * BINS + bin]++;
+                grow(binBox, 2 * BINS + bin, bounds, i);
+            }
         }
+        used[0] = maskX;
+        used[1] = maskY;
+        used[2] = maskZ;
         // The sweeps visit only the bins in use: an empty bin changes neither a running box nor a
         // count, so every cost is the one a sweep over all bins computes, and ties resolve alike
         // (the first candidate of equal cost is kept).
@@ -315,10 +346,13 @@ final class BvhBuilder {
     }
 
     private static void grow(double[] boxes, int b, double[] items, int item) {
-        for (int a = 0; a < 3; a++) {
-            boxes[6 * b + a] = Math.min(boxes[6 * b + a], items[6 * item + a]);
-            boxes[6 * b + 3 + a] = Math.max(boxes[6 * b + 3 + a], items[6 * item + 3 + a]);
-        }
+        int o = 6 * b, k = 6 * item;
+        boxes[o] = Math.min(boxes[o], items[k]);
+        boxes[o + 1] = Math.min(boxes[o + 1], items[k + 1]);
+        boxes[o + 2] = Math.min(boxes[o + 2], items[k + 2]);
+        boxes[o + 3] = Math.max(boxes[o + 3], items[k + 3]);
+        boxes[o + 4] = Math.max(boxes[o + 4], items[k + 4]);
+        boxes[o + 5] = Math.max(boxes[o + 5], items[k + 5]);
     }
 
     private static void include(double[] acc, double[] boxes, int b) {
