@@ -1,5 +1,6 @@
 package dev.crt.render;
 
+import dev.crt.geom.Aabb;
 import java.util.concurrent.ForkJoinPool;
 import java.util.concurrent.RecursiveTask;
 
@@ -62,6 +63,19 @@ final class BvhBuilder {
     private final double[] childBox;
     private final int[] children;
     private final boolean[] inner;
+
+    /**
+     * Writes {@code b} as item {@code i} of a flat bounds array, widened by an ulp each way:
+     * bounds computed with rounding (c ± r) must not clip the solid they hold.
+     */
+    static void put(Aabb b, double[] flat, int i) {
+        flat[6 * i] = Math.nextDown(b.min().x());
+        flat[6 * i + 1] = Math.nextDown(b.min().y());
+        flat[6 * i + 2] = Math.nextDown(b.min().z());
+        flat[6 * i + 3] = Math.nextUp(b.max().x());
+        flat[6 * i + 4] = Math.nextUp(b.max().y());
+        flat[6 * i + 5] = Math.nextUp(b.max().z());
+    }
 
     /** The hierarchy over {@code n} items whose boxes are {@code bounds} (six doubles each); item order in {@code orderOut}. */
     static Bvh build(double[] bounds, int n, int[] orderOut) {

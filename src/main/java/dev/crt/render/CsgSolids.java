@@ -229,16 +229,7 @@ final class CsgSolids {
         } else {
             int m = bounded.size();
             double[] flat = new double[6 * m];
-            for (int i = 0; i < m; i++) {
-                Aabb b = shapes.bounds(leafShape[first + bounded.get(i)]);
-                // Widened by an ulp each way, as for the scene's BVH: rounded bounds must not clip the solid.
-                flat[6 * i] = Math.nextDown(b.min().x());
-                flat[6 * i + 1] = Math.nextDown(b.min().y());
-                flat[6 * i + 2] = Math.nextDown(b.min().z());
-                flat[6 * i + 3] = Math.nextUp(b.max().x());
-                flat[6 * i + 4] = Math.nextUp(b.max().y());
-                flat[6 * i + 5] = Math.nextUp(b.max().z());
-            }
+            for (int i = 0; i < m; i++) BvhBuilder.put(shapes.bounds(leafShape[first + bounded.get(i)]), flat, i);
             int[] order = new int[m];
             Bvh h = BvhBuilder.build(flat, m, order);
             bvh[tree] = h;
@@ -309,7 +300,7 @@ final class CsgSolids {
             events = gatherLeaf(tree, testLeaf[i], ray, shapes, span, sc, events);
         }
         Bvh h = bvh[tree];
-        if (h == null || !line(h.root, 0, ray, tMin, tMax)) return events;
+        if (h == null || !ray.enters(h.root, 0, tMin, tMax)) return events;
         int[] stack = sc.stack;
         int top = 0;
         int node = 0;
@@ -321,7 +312,7 @@ final class CsgSolids {
                 }
             } else {
                 int left = h.children[2 * node], right = h.children[2 * node + 1];
-                boolean l = line(h.box, 12 * node, ray, tMin, tMax), r = line(h.box, 12 * node + 6, ray, tMin, tMax);
+                boolean l = ray.enters(h.box, 12 * node, tMin, tMax), r = ray.enters(h.box, 12 * node + 6, tMin, tMax);
                 if (l) {
                     if (r) stack[top++] = right;
                     node = left;
@@ -345,26 +336,6 @@ final class CsgSolids {
         else events = insert(sc, events, span.tIn, k, span.faceIn, true);
         if (span.tOut != Double.POSITIVE_INFINITY) events = insert(sc, events, span.tOut, k, span.faceOut, false);
         return events;
-    }
-
-    /**
-     * Whether the line passes through the box at {@code k} in {@code b} for some tMin ≤ t ≤ tMax.
-     * A slab the line runs exactly along gives NaN, which the comparisons ignore (conservatively a hit).
-     */
-    private static boolean line(double[] b, int k, Ray r, double tMin, double tMax) {
-        double near = tMin, far = tMax;
-        double t0 = (b[k + r.nearX] - r.ox) * r.ix, t1 = (b[k + 3 - r.nearX] - r.ox) * r.ix;
-        if (t0 > near) near = t0;
-        if (t1 < far) far = t1;
-        t0 = (b[k + 1 + r.nearY] - r.oy) * r.iy;
-        t1 = (b[k + 4 - r.nearY] - r.oy) * r.iy;
-        if (t0 > near) near = t0;
-        if (t1 < far) far = t1;
-        t0 = (b[k + 2 + r.nearZ] - r.oz) * r.iz;
-        t1 = (b[k + 5 - r.nearZ] - r.oz) * r.iz;
-        if (t0 > near) near = t0;
-        if (t1 < far) far = t1;
-        return near <= far;
     }
 
     /** Insertion into the sorted event list; equal distances keep the order of insertion. */

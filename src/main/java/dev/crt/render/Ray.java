@@ -25,4 +25,30 @@ final class Ray {
         nearY = iy >= 0 ? 0 : 3;
         nearZ = iz >= 0 ? 0 : 3;
     }
+
+    /**
+     * Where the ray enters the box at {@code k} in {@code b} within [tMin, tMax], or +∞ when it
+     * misses. A slab the ray runs exactly along gives NaN, which the comparisons ignore
+     * (conservatively a hit).
+     */
+    double entry(double[] b, int k, double tMin, double tMax) {
+        double near = tMin, far = tMax;
+        double t0 = (b[k + nearX] - ox) * ix, t1 = (b[k + 3 - nearX] - ox) * ix;
+        if (t0 > near) near = t0;
+        if (t1 < far) far = t1;
+        t0 = (b[k + 1 + nearY] - oy) * iy;
+        t1 = (b[k + 4 - nearY] - oy) * iy;
+        if (t0 > near) near = t0;
+        if (t1 < far) far = t1;
+        t0 = (b[k + 2 + nearZ] - oz) * iz;
+        t1 = (b[k + 5 - nearZ] - oz) * iz;
+        if (t0 > near) near = t0;
+        if (t1 < far) far = t1;
+        return near <= far ? near : Double.POSITIVE_INFINITY;
+    }
+
+    /** Whether the line passes through the box at {@code k} in {@code b} for some tMin ≤ t ≤ tMax. */
+    boolean enters(double[] b, int k, double tMin, double tMax) {
+        return entry(b, k, tMin, tMax) != Double.POSITIVE_INFINITY;
+    }
 }

@@ -59,13 +59,7 @@ final class SceneGeometry {
                     flat = Arrays.copyOf(flat, 12 * i);
                 }
                 boundedShape[i] = s;
-                // Widened by an ulp each way: bounds computed with rounding (c ± r) must not clip the solid.
-                flat[6 * i] = Math.nextDown(b.min().x());
-                flat[6 * i + 1] = Math.nextDown(b.min().y());
-                flat[6 * i + 2] = Math.nextDown(b.min().z());
-                flat[6 * i + 3] = Math.nextUp(b.max().x());
-                flat[6 * i + 4] = Math.nextUp(b.max().y());
-                flat[6 * i + 5] = Math.nextUp(b.max().z());
+                BvhBuilder.put(b, flat, i);
             } else {
                 infinite.add(e);
                 infiniteShape.add(s);

@@ -231,7 +231,7 @@ final class Tracer {
             }
             return found;
         }
-        if (entry(bvh.root, 0, tMax) == Double.POSITIVE_INFINITY) return found;
+        if (ray.entry(bvh.root, 0, 0, tMax) == Double.POSITIVE_INFINITY) return found;
         double[] boxes = this.boxes;
         int[] children = this.children;
         int top = 0;
@@ -246,7 +246,7 @@ final class Tracer {
                 }
             } else {
                 int left = children[2 * node], right = children[2 * node + 1];
-                double tl = entry(boxes, 12 * node, tMax), tr = entry(boxes, 12 * node + 6, tMax);
+                double tl = ray.entry(boxes, 12 * node, 0, tMax), tr = ray.entry(boxes, 12 * node + 6, 0, tMax);
                 if (tl != Double.POSITIVE_INFINITY) {
                     if (tr != Double.POSITIVE_INFINITY) {
                         if (tl <= tr) {
@@ -272,28 +272,6 @@ final class Tracer {
                 node = stack[--top];
             } while (stackT[top] >= tMax);
         }
-    }
-
-    /**
-     * Where the ray enters the box at {@code k} in {@code b} within [0, tMax], or +∞ when it
-     * misses. A slab the ray runs exactly along gives NaN, which the comparisons ignore
-     * (conservatively a hit).
-     */
-    private double entry(double[] b, int k, double tMax) {
-        Ray r = ray;
-        double near = 0, far = tMax;
-        double t0 = (b[k + r.nearX] - r.ox) * r.ix, t1 = (b[k + 3 - r.nearX] - r.ox) * r.ix;
-        if (t0 > near) near = t0;
-        if (t1 < far) far = t1;
-        t0 = (b[k + 1 + r.nearY] - r.oy) * r.iy;
-        t1 = (b[k + 4 - r.nearY] - r.oy) * r.iy;
-        if (t0 > near) near = t0;
-        if (t1 < far) far = t1;
-        t0 = (b[k + 2 + r.nearZ] - r.oz) * r.iz;
-        t1 = (b[k + 5 - r.nearZ] - r.oz) * r.iz;
-        if (t0 > near) near = t0;
-        if (t1 < far) far = t1;
-        return near <= far ? near : Double.POSITIVE_INFINITY;
     }
 
     private boolean hitItem(int item, double tMax) {
@@ -339,7 +317,7 @@ final class Tracer {
             }
             return product;
         }
-        if (entry(bvh.root, 0, tMax) == Double.POSITIVE_INFINITY) return product;
+        if (ray.entry(bvh.root, 0, 0, tMax) == Double.POSITIVE_INFINITY) return product;
         double[] boxes = this.boxes;
         int[] children = this.children;
         int top = 0;
@@ -351,8 +329,8 @@ final class Tracer {
                     if (product == 0) return blockedBy(light, items[k]);
                 }
             } else {
-                boolean hl = entry(boxes, 12 * node, tMax) != Double.POSITIVE_INFINITY;
-                boolean hr = entry(boxes, 12 * node + 6, tMax) != Double.POSITIVE_INFINITY;
+                boolean hl = ray.enters(boxes, 12 * node, 0, tMax);
+                boolean hr = ray.enters(boxes, 12 * node + 6, 0, tMax);
                 if (hl) {
                     if (hr) stack[top++] = children[2 * node + 1];
                     node = children[2 * node];
