@@ -260,6 +260,8 @@ final class CsgSolids {
         final int[] eventLeaf;
         final int[] eventFace;
         final boolean[] eventEntry;
+        /** The events by distance (indices into the event arrays), and room for sorting them. */
+        final int[] order, merge;
         final int[] stack;
         int starts;
 
@@ -275,6 +277,8 @@ final class CsgSolids {
             eventLeaf = new int[2 * n];
             eventFace = new int[2 * n];
             eventEntry = new boolean[2 * n];
+            order = new int[2 * n];
+            merge = new int[2 * n];
             stack = new int[Math.max(1, 2 * csg.maxDepth)];
         }
 
@@ -333,26 +337,57 @@ final class CsgSolids {
         sc.leafInside[k] = false;
         if (!shapes.span(leafShape[leafStart[tree] + k], ray, span)) return events;
         if (span.tIn == Double.NEGATIVE_INFINITY) sc.startInside[sc.starts++] = k;
-        else events = insert(sc, events, span.tIn, k, span.faceIn, true);
-        if (span.tOut != Double.POSITIVE_INFINITY) events = insert(sc, events, span.tOut, k, span.faceOut, false);
+        else events = add(sc, events, span.tIn, k, span.faceIn, true);
+        if (span.tOut != Double.POSITIVE_INFINITY) events = add(sc, events, span.tOut, k, span.faceOut, false);
         return events;
     }
 
-    /** Insertion into the sorted event list; equal distances keep the order of insertion. */
-    private static int insert(Scratch sc, int n, double t, int leaf, int face, boolean entry) {
-        int i = n;
-        while (i > 0 && sc.eventT[i - 1] > t) {
-            sc.eventT[i] = sc.eventT[i - 1];
-            sc.eventLeaf[i] = sc.eventLeaf[i - 1];
-            sc.eventFace[i] = sc.eventFace[i - 1];
-            sc.eventEntry[i] = sc.eventEntry[i - 1];
-            i--;
-        }
-        sc.eventT[i] = t;
-        sc.eventLeaf[i] = leaf;
-        sc.eventFace[i] = face;
-        sc.eventEntry[i] = entry;
+    private static int add(Scratch sc, int n, double t, int leaf, int face, boolean entry) {
+        sc.eventT[n] = t;
+        sc.eventLeaf[n] = leaf;
+        sc.eventFace[n] = face;
+        sc.eventEntry[n] = entry;
         return n + 1;
+    }
+
+    /** Runs of events this short are sorted by insertion; longer lists are then merged. */
+    private static final int RUN = 16;
+
+    /**
+     * The first {@code n} distances {@code t} in increasing order, as indices, in {@code a} or
+     * {@code b} (both at least n long), whichever is returned; events at equal distances
+     * keep the order they were gathered in, so ties resolve the same way every time. A ray
+     * through thousands of operands has thousands of events: runs sorted by insertion and then
+     * merged keep that at n log n.
+     */
+    static int[] sort(double[] t, int n, int[] a, int[] b) {
+        for (int i = 0; i < n; i++) a[i] = i;
+        for (int lo = 0; lo < n; lo += RUN) {
+            int hi = Math.min(n, lo + RUN);
+            for (int i = lo + 1; i < hi; i++) {
+                int x = a[i];
+                double tx = t[x];
+                int k = i;
+                while (k > lo && t[a[k - 1]] > tx) {
+                    a[k] = a[k - 1];
+                    k--;
+                }
+                a[k] = x;
+            }
+        }
+        for (int width = RUN; width < n; width *= 2) {
+            for (int lo = 0; lo < n; lo += 2 * width) {
+                int mid = Math.min(n, lo + width), hi = Math.min(n, lo + 2 * width);
+                int i = lo, j = mid, k = lo;
+                while (i < mid && j < hi) b[k++] = t[a[j]] < t[a[i]] ? a[j++] : a[i++];
+                while (i < mid) b[k++] = a[i++];
+                while (j < hi) b[k++] = a[j++];
+            }
+            int[] swap = a;
+            a = b;
+            b = swap;
+        }
+        return a;
     }
 
     /** Whether tree-local node {@code v} (already reset for this walk) contains the point the walk is at. */
@@ -430,20 +465,22 @@ final class CsgSolids {
         for (int i = 0; i < sc.starts; i++) flip(tree, sc.startInside[i], sc);
         boolean known = false, state = false;
         double product = 1;
+        int[] order = sort(sc.eventT, n, sc.order, sc.merge);
         int i = 0;
         while (i < n) {
-            double t0 = sc.eventT[i];
+            double t0 = sc.eventT[order[i]];
             if (t0 >= tMax) break;
             if (t0 > 0 && !known) {
                 state = rootState(tree, sc);
                 known = true;
             }
             double limit = t0 + tol + TIE * Math.abs(t0);
-            int shown = i;
+            int shown = order[i];
             int j = i;
-            for (; j < n && sc.eventT[j] <= limit; j++) {
-                flip(tree, sc.eventLeaf[j], sc);
-                if (sc.eventLeaf[j] >= sc.eventLeaf[shown]) shown = j;
+            for (; j < n && sc.eventT[order[j]] <= limit; j++) {
+                int e = order[j];
+                flip(tree, sc.eventLeaf[e], sc);
+                if (sc.eventLeaf[e] >= sc.eventLeaf[shown]) shown = e;
             }
             if (known) {
                 boolean now = rootState(tree, sc);
