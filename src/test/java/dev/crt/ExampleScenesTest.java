@@ -17,16 +17,22 @@ import java.util.stream.Stream;
 import org.junit.jupiter.api.DynamicTest;
 import org.junit.jupiter.api.TestFactory;
 
-/** Every script in scenes/ compiles without errors and renders (small) to finite, non-blank pixels. */
+/**
+ * Every script in scenes/ and bench/scenes/ compiles without errors and renders (small) to finite,
+ * non-blank pixels.
+ */
 class ExampleScenesTest {
     @TestFactory
     List<DynamicTest> everyExampleSceneCompilesAndRenders() throws IOException {
-        List<Path> scripts;
-        try (Stream<Path> s = Files.list(Path.of("scenes"))) {
-            scripts = s.filter(p -> p.toString().endsWith(".crt")).sorted().toList();
+        List<Path> scripts = new java.util.ArrayList<>();
+        for (String folder : List.of("scenes", "bench/scenes")) {
+            try (Stream<Path> s = Files.list(Path.of(folder))) {
+                List<Path> found = s.filter(p -> p.toString().endsWith(".crt")).sorted().toList();
+                assertThat(found).as(folder).isNotEmpty();
+                scripts.addAll(found);
+            }
         }
-        assertThat(scripts).isNotEmpty();
-        return scripts.stream().map(p -> DynamicTest.dynamicTest(p.getFileName().toString(), () -> {
+        return scripts.stream().map(p -> DynamicTest.dynamicTest(p.toString(), () -> {
             CompileResult r = CrtCompiler.compile(ScriptFiles.read(p),
                     new CompileOptions(3, List.of(Path.of("assets")), CompileOptions.DEFAULT_LOOP_BUDGET,
                             CompileOptions.DEFAULT_TIME_BUDGET));
