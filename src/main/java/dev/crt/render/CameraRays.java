@@ -68,11 +68,14 @@ final class CameraRays {
      */
     void throughLens(double lx, double ly, double[] o, double[] d) {
         double k = focalDistance / (d[0] * fx + d[1] * fy + d[2] * fz);
-        double fpx = px + d[0] * k, fpy = py + d[1] * k, fpz = pz + d[2] * k;
-        o[0] = px + lensRadius * (lx * rx + ly * ux);
-        o[1] = py + lensRadius * (lx * ry + ly * uy);
-        o[2] = pz + lensRadius * (lx * rz + ly * uz);
-        double dx = fpx - o[0], dy = fpy - o[1], dz = fpz - o[2];
+        double ox = lensRadius * (lx * rx + ly * ux), oy = lensRadius * (lx * ry + ly * uy),
+                oz = lensRadius * (lx * rz + ly * uz);
+        o[0] = px + ox;
+        o[1] = py + oy;
+        o[2] = pz + oz;
+        // F − O = d·k − (O − P), scaled by 1/k: the same direction, without forming the point in
+        // focus, which overflows when the focal distance is near the largest double.
+        double dx = d[0] - ox / k, dy = d[1] - oy / k, dz = d[2] - oz / k;
         double inv = 1 / Math.sqrt(dx * dx + dy * dy + dz * dz);
         d[0] = dx * inv;
         d[1] = dy * inv;

@@ -159,6 +159,22 @@ class CameraAndBackgroundTest {
         assertThat(pinhole.get(gi, 20, 1)).isEqualTo(1f);
     }
 
+    @Test
+    void aFocalDistanceNearTheLargestDoubleFocusesAtInfinity() {
+        // The point in focus, P + d·1e308/(d·f), overflows; the lens ray must still be finite and
+        // parallel to the pinhole ray (a lens focused at infinity), starting on the lens.
+        Camera c = new Camera(v(1, 2, -6), v(0, 0.5, 1), 50, 0, 250, 1e308, ApertureShape.CIRCLE, SourceSpan.NONE);
+        CameraRays cam = new CameraRays(c, 64, 48);
+        double[] d0 = new double[3], o = new double[3], d = new double[3];
+        for (int i = 0; i < 64; i += 9) {
+            cam.direction(i, 40, 0.5, 0.5, d0);
+            System.arraycopy(d0, 0, d, 0, 3);
+            cam.throughLens(0.6, -0.7, o, d);
+            assertThat(d).containsExactly(d0, within(1e-12));
+            assertThat(new Vec3(o[0], o[1], o[2]).minus(c.position()).length()).isCloseTo(0.25 * Math.hypot(0.6, 0.7), within(1e-12));
+        }
+    }
+
     /** The pixel column through the green ball's centre. */
     private static int greenColumn(dev.crt.scene.Settings s) {
         Vec3 d = v(3.2, 0, 20).normalize();
