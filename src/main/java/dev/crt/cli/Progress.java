@@ -14,6 +14,8 @@ final class Progress implements AutoCloseable {
     static final Progress NONE = new Progress(null);
 
     private final ProgressBar bar;
+    /** Set while the bar stands at 0 for a step before the counted work (see {@link #preparing}). */
+    private boolean waiting;
 
     private Progress(ProgressBar bar) { this.bar = bar; }
 
@@ -52,8 +54,24 @@ final class Progress implements AutoCloseable {
         return target.startsWith("/dev/pts/") || target.startsWith("/dev/tty") || target.equals("/dev/console");
     }
 
+    /**
+     * Shows {@code what} beside the bar until the first update, and starts the bar's clock only
+     * then: the elapsed time and the ETA are of the counted work alone, not of the step before it
+     * (building the BVH of a million objects takes seconds in which no pixel is done).
+     */
+    synchronized void preparing(String what) {
+        if (bar == null) return;
+        bar.setExtraMessage(what);
+        waiting = true;
+    }
+
     synchronized void update(long done, long total) {
         if (bar == null) return;
+        if (waiting) {
+            waiting = false;
+            bar.reset();
+            bar.setExtraMessage("");
+        }
         if (bar.getMax() != total) bar.maxHint(total);
         bar.stepTo(done);
     }

@@ -61,6 +61,7 @@ final class RenderCommand implements Callable<Integer> {
         FrameJob.Outcome outcome;
         try (Cancellation cancel = Cancellation.install();
              Progress progress = Progress.start("Rendering", total, "px", renderOptions.quiet)) {
+            progress.preparing("preparing the scene");
             outcome = FrameJob.run(scene, target, renderOptions.threads, cancel.monitor(progress));
         } catch (RenderCancelledException e) {
             err.println("crt: render cancelled; nothing was written");

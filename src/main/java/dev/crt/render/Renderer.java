@@ -62,6 +62,8 @@ public final class Renderer {
         List<Tracer> tracers = new ArrayList<>();
         List<Thread> pool = new ArrayList<>();
         Throwable[] failure = new Throwable[1];
+        // Tells the monitor the counted work begins now, before the first tile is done.
+        monitor.progress(0, total);
         for (int w = 0; w < workers; w++) {
             Tracer tracer = new Tracer(geometry, lights, background);
             tracers.add(tracer);
