@@ -123,30 +123,23 @@ final class CsgSolids {
         int op = code(c.operation());
         int self = newNode(tree, op, parentNode, positive);
         int counted = nodeStart[tree] + self;
-        ArrayDeque<Entity> todo = new ArrayDeque<>();
-        ArrayDeque<Transform> placement = new ArrayDeque<>();
-        ArrayDeque<Boolean> firsts = new ArrayDeque<>();
-        todo.push(c);
-        placement.push(parent);
-        firsts.push(true);
+        ArrayDeque<Operand> todo = new ArrayDeque<>();
+        todo.push(new Operand(c, parent, true));
         Aabb bounds = null;
         boolean root = true;
         while (!todo.isEmpty()) {
-            Entity e = todo.pop();
-            Transform placed = placement.pop();
+            Operand next = todo.pop();
+            Entity e = next.entity();
+            Transform placed = next.placed();
             Transform t = e.transform().then(placed);
-            boolean first = firsts.pop();
+            boolean first = next.first();
             Aabb b;
             if (e instanceof Csg inner && (root || merges(op, first, code(inner.operation())))) {
                 root = false;
                 // The right operand is pushed first so that leaves keep the script's left-to-right
                 // order. Only a difference's first operand is special, and only its left side can be.
-                todo.push(inner.right());
-                placement.push(t);
-                firsts.push(false);
-                todo.push(inner.left());
-                placement.push(t);
-                firsts.push(first);
+                todo.push(new Operand(inner.right(), t, false));
+                todo.push(new Operand(inner.left(), t, first));
                 continue;
             }
             nodeChildren[counted]++;
@@ -163,6 +156,9 @@ final class CsgSolids {
         }
         return bounds;
     }
+
+    /** An operand waiting to be added: the entity, what places it, and whether it is a difference's first operand. */
+    private record Operand(Entity entity, Transform placed, boolean first) {}
 
     /**
      * Whether an operand of operation {@code inner} merges into a node of operation {@code op}: a
