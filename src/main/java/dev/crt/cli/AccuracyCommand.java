@@ -151,7 +151,7 @@ final class AccuracyCommand implements Callable<Integer> {
                     AccuracyStudy.Point::paretoRmse, dir.resolve("rmse"));
             AccuracyChart.write(points, title + ": 1 − SSIM against time", "1 − SSIM", p -> 1 - p.ssim(),
                     AccuracyStudy.Point::paretoSsim, dir.resolve("ssim"));
-            ImageFiles.write(reference, dir.resolve("reference.png"), s.gamma(), Map.of("Software", "CRT accuracy reference"));
+            ImageFiles.write(reference, dir.resolve("reference.png"), s.outputGamma(), Map.of("Software", "CRT accuracy reference"));
         } catch (IOException e) {
             throw new CliFailure(ExitCode.FILE_ERROR, "cannot write into " + dir + ": " + ScriptCompilation.plain(e));
         }

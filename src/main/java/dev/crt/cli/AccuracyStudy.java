@@ -71,7 +71,7 @@ final class AccuracyStudy {
      */
     static List<Point> run(Scene scene, FrameBuffer reference, List<Sampler> methods, List<Integer> budgets,
             double noise, int threads, RenderMonitor monitor, Listener listener) {
-        double gamma = scene.settings().gamma();
+        double gamma = scene.settings().outputGamma();
         int w = scene.settings().width(), h = scene.settings().height();
         double[] ref = ImageMetrics.levels(reference, gamma);
         listener.rendering("warming up");

@@ -3,6 +3,7 @@ package dev.crt.cli;
 import dev.crt.scene.Sampler;
 import dev.crt.scene.Scene;
 import dev.crt.scene.Settings;
+import dev.crt.scene.Shading;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.ParameterException;
@@ -29,6 +30,10 @@ final class RenderOptions {
             description = "The adaptive sampler's target: standard error of a pixel's mean, in 8-bit levels (default: 0.5).")
     Double noise;
 
+    @Option(names = "--shading", paramLabel = "MODEL",
+            description = "crt (CRT's model) or original (the look of CRT 2015's scenes); overrides Settings.")
+    String shading;
+
     @Option(names = "--threads", paramLabel = "N", description = "Render threads; 0 uses every core (default: ${DEFAULT-VALUE}).")
     int threads = 0;
 
@@ -49,6 +54,9 @@ final class RenderOptions {
             throw new ParameterException(spec.commandLine(),
                     "--sampler must be grid, jittered, sobol or adaptive, not '" + sampler + "'");
         }
+        if (shading != null && Shading.of(shading).isEmpty()) {
+            throw new ParameterException(spec.commandLine(), "--shading must be crt or original, not '" + shading + "'");
+        }
         if (noise != null && !(noise > 0 && noise < Double.POSITIVE_INFINITY)) {
             throw new ParameterException(spec.commandLine(), "--noise must be a positive number of 8-bit levels, not " + noise);
         }
@@ -61,6 +69,7 @@ final class RenderOptions {
         s = s.withSampling(supersampling != null ? supersampling : s.supersampling(),
                 dofSamples != null ? dofSamples : s.dofSamples());
         s = s.withSampler(sampler != null ? Sampler.of(sampler).orElseThrow() : s.sampler(), noise != null ? noise : s.noise());
+        if (shading != null) s = s.withShading(Shading.of(shading).orElseThrow());
         return scene.withSettings(s);
     }
 }

@@ -15,6 +15,13 @@ final class PixelSampler {
     static final int PILOT = 4;
 
     private final Tracer tracer;
+    /** The 2015 model, or null for CRT's own. */
+    private final OriginalShading original;
+    /**
+     * Where in its cell of the n×n grid a grid sample lies: the centre (CRT), or the cell's top-left
+     * corner, as the 2015 program placed them when n > 1.
+     */
+    private final double gridOffset;
     private final CameraRays camera;
     private final Sampler kind;
     private final int grid, lensSamples, depth, budget;
@@ -37,18 +44,20 @@ final class PixelSampler {
      * A sampler for one render thread; {@code pilotVariance} (one value per pixel, shared by all the
      * render's samplers) is needed by the adaptive sampler only.
      */
-    PixelSampler(Tracer tracer, CameraRays camera, Settings settings, float[] pilotVariance) {
+    PixelSampler(Tracer tracer, OriginalShading original, CameraRays camera, Settings settings, float[] pilotVariance) {
         this.tracer = tracer;
+        this.original = original;
+        gridOffset = original != null && settings.supersampling() > 1 ? 0 : 0.5;
         this.camera = camera;
         kind = settings.sampler();
         grid = settings.supersampling();
         lensSamples = camera.hasLens() ? settings.dofSamples() : 1;
-        depth = settings.recursionDepth();
+        depth = settings.effectiveRecursionDepth();
         seed = settings.seed();
         budget = grid * grid * lensSamples;
         weight = 1.0 / ((double) grid * grid * lensSamples);
         noise2 = settings.noise() * settings.noise();
-        inverseGamma = 1 / settings.gamma();
+        inverseGamma = 1 / settings.outputGamma();
         int strata = kind == Sampler.JITTERED && camera.hasLens() ? budget : 0;
         lensStrataU = new int[strata];
         lensStrataV = new int[strata];
@@ -73,15 +82,27 @@ final class PixelSampler {
         out[0] = t.accR;
         out[1] = t.accG;
         out[2] = t.accB;
+        if (original != null) truncate(out);
+    }
+
+    /**
+     * The 2015 program wrote min(255, trunc(c·255)) and clamped negatives to 0: each channel
+     * becomes that level's exact value, which the writers (at gamma 1) turn back into the level.
+     */
+    private static void truncate(double[] out) {
+        for (int c = 0; c < 3; c++) {
+            double v = out[c];
+            out[c] = v > 0 ? Math.min(255, Math.floor(v * 255)) / 255 : v < 0 ? 0 : v;
+        }
     }
 
     /** Wave 1's sampler, unchanged: the centres of an n×n grid, lens points in sequence from the pixel's generator. */
     private void grid(int i, int j) {
         if (camera.hasLens()) random.seed(i, j, seed);
         for (int b = 0; b < grid; b++) {
-            double sy = (b + 0.5) / grid;
+            double sy = (b + gridOffset) / grid;
             for (int a = 0; a < grid; a++) {
-                double sx = (a + 0.5) / grid;
+                double sx = (a + gridOffset) / grid;
                 if (!camera.hasLens()) {
                     trace(i, j, sx, sy, weight);
                     continue;
@@ -216,6 +237,7 @@ final class PixelSampler {
         out[0] = (pilotMean[0] * (double) pilotCount + t.accR) / n;
         out[1] = (pilotMean[1] * (double) pilotCount + t.accG) / n;
         out[2] = (pilotMean[2] * (double) pilotCount + t.accB) / n;
+        if (original != null) truncate(out);
         return true;
     }
 
@@ -228,7 +250,11 @@ final class PixelSampler {
     private void trace(int i, int j, double sx, double sy, double w) {
         camera.direction(i, j, sx, sy, direction);
         tracer.primaryRays++;
-        tracer.trace(camera.px, camera.py, camera.pz, direction[0], direction[1], direction[2], depth, w, w, w);
+        if (original != null) {
+            original.trace(camera.px, camera.py, camera.pz, direction[0], direction[1], direction[2], depth, 0, w, w, w);
+        } else {
+            tracer.trace(camera.px, camera.py, camera.pz, direction[0], direction[1], direction[2], depth, w, w, w);
+        }
     }
 
     private void traceThroughLens(int i, int j, double sx, double sy, double u1, double u2, double u3, double w) {
@@ -236,6 +262,10 @@ final class PixelSampler {
         camera.aperture.sample(u1, u2, u3, lens);
         camera.throughLens(lens[0], lens[1], origin, direction);
         tracer.primaryRays++;
-        tracer.trace(origin[0], origin[1], origin[2], direction[0], direction[1], direction[2], depth, w, w, w);
+        if (original != null) {
+            original.trace(origin[0], origin[1], origin[2], direction[0], direction[1], direction[2], depth, 0, w, w, w);
+        } else {
+            tracer.trace(origin[0], origin[1], origin[2], direction[0], direction[1], direction[2], depth, w, w, w);
+        }
     }
 }

@@ -5,6 +5,7 @@ import dev.crt.scene.Entity;
 import dev.crt.scene.Sampler;
 import dev.crt.scene.Scene;
 import dev.crt.scene.Settings;
+import dev.crt.scene.Shading;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Optional;
@@ -38,7 +39,8 @@ public final class Renderer {
         entities = scene.entities();
         geometry = new SceneGeometry(scene.entities());
         lights = new Lights(settings.lights());
-        background = new BackgroundShader(settings.background(), settings.gamma());
+        background = new BackgroundShader(settings.effectiveBackground(), settings.outputGamma(),
+                settings.shading() == Shading.ORIGINAL);
         buildNanos = System.nanoTime() - start;
         stats = new RenderStats(0, 0, 0, 0, buildNanos, 0);
     }
@@ -80,7 +82,9 @@ public final class Renderer {
         for (int w = 0; w < workers; w++) {
             Tracer tracer = new Tracer(geometry, lights, background);
             tracers.add(tracer);
-            PixelSampler sampler = new PixelSampler(tracer, camera, settings, pilotVariance);
+            OriginalShading original = settings.shading() == Shading.ORIGINAL
+                    ? new OriginalShading(tracer, geometry, lights, background) : null;
+            PixelSampler sampler = new PixelSampler(tracer, original, camera, settings, pilotVariance);
             Runnable work = () -> {
                 double[] rgb = new double[3];
                 float[] pilot = new float[3];
