@@ -91,6 +91,15 @@ class AccuracyCommandTest {
         assertThat(again.exitCode()).as(again.err()).isZero();
         assertThat(again.err()).contains("using the cached reference");
         assertThat(Files.readAllLines(out.resolve("accuracy.csv"))).hasSize(rows.size());
+
+        Files.delete(out.resolve("rmse.png"));
+        CliRun replot = CliRun.of("accuracy", script().toString(), "-o", out.toString(), "--replot");
+        assertThat(replot.exitCode()).as(replot.err()).isZero();
+        assertThat(ImageIO.read(out.resolve("rmse.png").toFile()).getWidth()).isEqualTo(800);
+        Files.writeString(out.resolve("accuracy.csv"), "method,spp\nfast,1\n");
+        CliRun bad = CliRun.of("accuracy", script().toString(), "-o", out.toString(), "--replot");
+        assertThat(bad.exitCode()).isEqualTo(3);
+        assertThat(bad.err()).contains("is not a CSV crt accuracy wrote");
     }
 
     @Test
