@@ -227,7 +227,8 @@ final class AccuracyCommand implements Callable<Integer> {
         ReferenceCache cache = new ReferenceCache(ReferenceCache.defaultFolder());
         String version = Main.class.getPackage().getImplementationVersion();
         String key = ReferenceCache.key(source.text(), Double.toString(timeOption.time), s.width() + "×" + s.height(),
-                Integer.toString(referenceSpp), String.valueOf(scriptOptions.assetDirs), version == null ? "dev" : version);
+                Integer.toString(referenceSpp), String.valueOf(scriptOptions.assetDirs), version == null ? "dev" : version,
+                "reference seed " + AccuracyStudy.REFERENCE_SEED);
         if (!noCache) {
             FrameBuffer cached = cache.load(key);
             if (cached != null && cached.width() == s.width() && cached.height() == s.height()) {
@@ -236,7 +237,7 @@ final class AccuracyCommand implements Callable<Integer> {
                 return cached;
             }
         }
-        Scene ref = AccuracyStudy.withBudget(scene, Sampler.SOBOL, referenceSpp, noise);
+        Scene ref = AccuracyStudy.reference(scene, referenceSpp, noise);
         long total = (long) s.width() * s.height();
         FrameBuffer image;
         try (Progress progress = Progress.start("Reference (" + referenceSpp + " spp)", total, "px", false)) {

@@ -115,10 +115,10 @@ final class PixelSampler {
     }
 
     /**
-     * One uniform point in each cell of the n×n grid, each cell's m lens samples after the other;
-     * the lens's first two coordinates each take one of the pixel's n²·m strata, in two random
-     * orders (a Latin hypercube over the whole budget, so the lens is as finely stratified as the
-     * pixel has samples).
+     * The n×n cells of the pixel each take m samples, every one at its own uniform point in its
+     * cell (so the pixel's area is sampled n²·m times, not only n² with a lens); the lens's first
+     * two coordinates each take one of the pixel's n²·m strata, in two random orders (a Latin
+     * hypercube over the whole budget).
      */
     private void jittered(int i, int j) {
         random.seed(i, j, seed);
@@ -129,12 +129,12 @@ final class PixelSampler {
         int k = 0;
         for (int b = 0; b < grid; b++) {
             for (int a = 0; a < grid; a++) {
-                double sx = (a + random.next()) / grid, sy = (b + random.next()) / grid;
                 if (!camera.hasLens()) {
-                    trace(i, j, sx, sy, weight);
+                    trace(i, j, (a + random.next()) / grid, (b + random.next()) / grid, weight);
                     continue;
                 }
                 for (int l = 0; l < lensSamples; l++, k++) {
+                    double sx = (a + random.next()) / grid, sy = (b + random.next()) / grid;
                     double u1 = (lensStrataU[k] + random.next()) / budget, u2 = (lensStrataV[k] + random.next()) / budget;
                     traceThroughLens(i, j, sx, sy, u1, u2, random.next(), weight);
                 }

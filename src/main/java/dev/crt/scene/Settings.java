@@ -72,6 +72,12 @@ public record Settings(
                 dofSamples, recursionDepth, gamma, width, height, s, seed, noiseTarget, shading, given);
     }
 
+    /** These settings with another scene seed. */
+    public Settings withSeed(long newSeed) {
+        return new Settings(title, author, date, notes, lights, camera, background, supersampling,
+                dofSamples, recursionDepth, gamma, width, height, sampler, newSeed, noise, shading, given);
+    }
+
     /** These settings with another shading model. */
     public Settings withShading(Shading model) {
         return new Settings(title, author, date, notes, lights, camera, background, supersampling,

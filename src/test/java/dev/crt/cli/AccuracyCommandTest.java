@@ -117,6 +117,13 @@ class AccuracyCommandTest {
     }
 
     @Test
+    void theReferenceDrawsOtherSobolPointsThanTheStudy() throws IOException {
+        dev.crt.scene.Scene scene = dev.crt.lang.CrtCompiler.compile(dev.crt.lang.ScriptFiles.read(script()),
+                dev.crt.lang.CompileOptions.DEFAULT).scene();
+        assertThat(AccuracyStudy.reference(scene, 64, 0.5).settings().seed()).isNotEqualTo(scene.settings().seed());
+    }
+
+    @Test
     void withALensTheBudgetGoesToTwoByTwoSubPixelsTimesLensSamples() {
         assertThat(AccuracyStudy.split(64, true)).containsExactly(2, 16);
         assertThat(AccuracyStudy.split(6, true)).containsExactly(1, 6);
