@@ -1,0 +1,101 @@
+package dev.crt.live;
+
+import dev.crt.image.FrameBuffer;
+import dev.crt.image.IdColors;
+import dev.crt.scene.Scene;
+
+/**
+ * One offscreen frame of a scene through its own camera at its own size: what {@code crt preview}
+ * writes and what the alignment tests compare with the ray tracer.
+ */
+public final class Preview implements AutoCloseable {
+    /** The passes a preview can write. */
+    public enum Pass { COLOR, ID, DEPTH }
+
+    private final GlContext context;
+    private final LiveRenderer renderer;
+
+    private Preview(GlContext context, LiveRenderer renderer) {
+        this.context = context;
+        this.renderer = renderer;
+    }
+
+    /** Makes a headless context and the renderer on this thread. */
+    public static Preview open() throws GlUnavailableException {
+        GlContext context = GlContext.create();
+        try {
+            return new Preview(context, new LiveRenderer());
+        } catch (RuntimeException e) {
+            context.close();
+            throw e;
+        }
+    }
+
+    /** The GL version and renderer in use. */
+    public String description() { return context.description(); }
+
+    /** Draws {@code scene} from its camera at its settings' size; then read a pass. */
+    public void draw(Scene scene) {
+        draw(SceneConverter.convert(scene), ViewCamera.of(scene.settings().camera()), scene.settings().width(),
+                scene.settings().height(), false);
+    }
+
+    void draw(GpuScene gpu, ViewCamera view, int width, int height, boolean flatIds) {
+        renderer.setScene(gpu);
+        renderer.resize(width, height);
+        renderer.clear();
+        renderer.draw(view, 0, 0, width, height, LiveRenderer.Overlay.NONE, flatIds);
+    }
+
+    /** The renderer, for callers that draw their own views. */
+    public LiveRenderer renderer() { return renderer; }
+
+    /** Entity index per pixel, −1 for background, rows top to bottom. */
+    public int[] ids() { return renderer.readIds(); }
+
+    /** Distance along the unit ray per pixel, +∞ for background. */
+    public float[] depth() { return renderer.readDepth(); }
+
+    /** The last drawn frame as an image of the given pass, ready for the image writers (PFM depth in the red channel of a grey image). */
+    public FrameBuffer image(Pass pass, double gamma) {
+        int w = renderer.width(), h = renderer.height();
+        FrameBuffer image;
+        switch (pass) {
+            case ID -> image = IdColors.image(renderer.readIds(), w, h);
+            case DEPTH -> {
+                float[] d = renderer.readDepth();
+                image = new FrameBuffer(w, h);
+                for (int y = 0; y < h; y++) {
+                    for (int x = 0; x < w; x++) {
+                        double v = d[y * w + x];
+                        image.set(x, y, v, v, v);
+                    }
+                }
+            }
+            default -> {
+                int[] c = renderer.readColour();
+                image = new FrameBuffer(w, h);
+                // The shader already applied the gamma: undo it so the writers' encoding gives back these bytes.
+                for (int y = 0; y < h; y++) {
+                    for (int x = 0; x < w; x++) {
+                        int p = c[y * w + x];
+                        image.set(x, y, linear((p >> 16) & 255, gamma), linear((p >> 8) & 255, gamma),
+                                linear(p & 255, gamma));
+                    }
+                }
+            }
+        }
+        return image;
+    }
+
+    private static double linear(int byteValue, double gamma) {
+        double v = byteValue / 255.0;
+        return gamma == 1 ? v : Math.pow(v, gamma);
+    }
+
+    @Override
+    public void close() {
+        renderer.close();
+        context.close();
+    }
+}
