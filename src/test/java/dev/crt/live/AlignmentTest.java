@@ -74,7 +74,10 @@ class AlignmentTest {
                 .isGreaterThanOrEqualTo(0.99);
     }
 
-    /** The check can fail: a live view whose field of view is 2% off does not pass it. */
+    /**
+     * The check can fail: a field of view 2% off moves silhouettes by about a pixel, which the
+     * silhouette margin forgives, but not the distances; 10% off fails the ids too.
+     */
     @org.junit.jupiter.api.Test
     void aCameraTwoPercentOffFailsTheCheck() throws IOException {
         Scene scene = compile(Path.of("scenes/csg-sculpture.crt"));
@@ -84,8 +87,15 @@ class AlignmentTest {
         dev.crt.scene.Camera off = new dev.crt.scene.Camera(c.position(), c.pointing(), c.fov() * 1.02, c.roll(),
                 c.aperture(), c.focalDistance(), c.apertureShape(), c.span());
         preview.draw(SceneConverter.convert(scene), ViewCamera.of(off), WIDTH, HEIGHT, false);
-        Comparison bad = compare(tracer.idPass(), tracer.depthPass(), preview.ids(), preview.depth(), WIDTH, HEIGHT);
-        assertThat((double) bad.agreeing / bad.compared).isLessThan(0.99);
+        int[] ids = tracer.idPass();
+        double[] depth = tracer.depthPass();
+        Comparison bad = compare(ids, depth, preview.ids(), preview.depth(), WIDTH, HEIGHT);
+        assertThat((double) bad.depthWithin / bad.bothHit).isLessThan(0.99);
+        dev.crt.scene.Camera wide = new dev.crt.scene.Camera(c.position(), c.pointing(), c.fov() * 1.1, c.roll(),
+                c.aperture(), c.focalDistance(), c.apertureShape(), c.span());
+        preview.draw(SceneConverter.convert(scene), ViewCamera.of(wide), WIDTH, HEIGHT, false);
+        Comparison worse = compare(ids, depth, preview.ids(), preview.depth(), WIDTH, HEIGHT);
+        assertThat((double) worse.agreeing / worse.compared).isLessThan(0.99);
     }
 
     record Comparison(int compared, int agreeing, int bothHit, int depthWithin, double worstDepth) {}
