@@ -18,9 +18,10 @@ import java.nio.charset.StandardCharsets;
 import org.lwjgl.BufferUtils;
 
 /**
- * Draws a {@link GpuScene} into an offscreen framebuffer: a background pass, then one proxy box
- * per bounded entity and one full-screen pass per unbounded one, each fragment ray-casting its
- * entity exactly and writing colour, entity id and distance along the ray. The same object serves
+ * Draws a {@link GpuScene} into offscreen framebuffers in two passes: geometry (one proxy box per
+ * bounded entity and a full-screen triangle per unbounded one, each fragment ray-casting its
+ * entity exactly and keeping entity id, distance along the ray and primitive), then shading once
+ * per pixel (background, lights, shadow rays, highlights, grid). The same object serves
  * the live view panel, {@code crt preview} and the tests. Every call must come from the thread the
  * {@link GlContext} is current on.
  */
@@ -30,11 +31,12 @@ public final class LiveRenderer implements AutoCloseable {
     /** Lights that cast shadows: the first ones of the scene. */
     public static final int SHADOW_LIGHTS = 4;
 
-    private final int entityProgram, backgroundProgram;
+    private final int entityProgram, shadeProgram;
     private final int cubeVao, cubeVbo, instanceVbo, fullVao, fullInstanceVbo;
     private final int sceneBuffer, sceneTexture, directoryBuffer, directoryTexture;
     private int panoramaTexture;
-    private int framebuffer, colourTexture, idTexture, depthTexture, depthBuffer;
+    /** The geometry pass's framebuffer (id, distance, primitive address, depth) and the shaded colour's. */
+    private int framebuffer, colourFramebuffer, colourTexture, idTexture, depthTexture, leafTexture, depthBuffer;
     private int width, height;
     private GpuScene scene;
     private float[] uploaded = new float[0];
@@ -44,9 +46,9 @@ public final class LiveRenderer implements AutoCloseable {
 
     /** Compiles the shaders and makes the buffers; the context must be current. */
     public LiveRenderer() {
-        String common = resource("common.glsl");
-        entityProgram = program(resource("entity.vert"), "#version 330 core\n" + common + resource("entity.frag"));
-        backgroundProgram = program(resource("fullscreen.vert"), "#version 330 core\n" + common + resource("background.frag"));
+        String common = "#version 330 core\n" + resource("common.glsl") + resource("scene.glsl");
+        entityProgram = program(resource("entity.vert"), common + resource("entity.frag"));
+        shadeProgram = program(resource("fullscreen.vert"), common + resource("shade.frag"));
 
         cubeVao = glGenVertexArrays();
         glBindVertexArray(cubeVao);
@@ -194,30 +196,43 @@ public final class LiveRenderer implements AutoCloseable {
         public static final Overlay NONE = new Overlay(-1, -1, false, 1, 1);
     }
 
-    /** Sizes the offscreen framebuffer (colour RGBA8, id R32I, depth R32F) to {@code w × h}. */
+    /** Sizes the offscreen framebuffers (ids R32I, distances R32F, primitive addresses R32I; colour RGBA8) to {@code w × h}. */
     public void resize(int w, int h) {
         if (w == width && h == height && framebuffer != 0) return;
-        if (framebuffer != 0) {
-            glDeleteFramebuffers(framebuffer);
-            glDeleteTextures(new int[] {colourTexture, idTexture, depthTexture});
-            glDeleteRenderbuffers(depthBuffer);
-        }
+        deleteFramebuffers();
         width = w;
         height = h;
         framebuffer = glGenFramebuffers();
         glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
-        colourTexture = attachment(GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE, GL_COLOR_ATTACHMENT0);
-        idTexture = attachment(GL_R32I, GL_RED_INTEGER, GL_INT, GL_COLOR_ATTACHMENT1);
-        depthTexture = attachment(GL_R32F, GL_RED, GL_FLOAT, GL_COLOR_ATTACHMENT2);
+        idTexture = attachment(GL_R32I, GL_RED_INTEGER, GL_INT, GL_COLOR_ATTACHMENT0);
+        depthTexture = attachment(GL_R32F, GL_RED, GL_FLOAT, GL_COLOR_ATTACHMENT1);
+        leafTexture = attachment(GL_R32I, GL_RED_INTEGER, GL_INT, GL_COLOR_ATTACHMENT2);
         depthBuffer = glGenRenderbuffers();
         glBindRenderbuffer(GL_RENDERBUFFER, depthBuffer);
         glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT32F, w, h);
         glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depthBuffer);
         glDrawBuffers(new int[] {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2});
+        complete();
+        colourFramebuffer = glGenFramebuffers();
+        glBindFramebuffer(GL_FRAMEBUFFER, colourFramebuffer);
+        colourTexture = attachment(GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE, GL_COLOR_ATTACHMENT0);
+        glDrawBuffers(new int[] {GL_COLOR_ATTACHMENT0});
+        complete();
+    }
+
+    private static void complete() {
         int status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
         if (status != GL_FRAMEBUFFER_COMPLETE) {
             throw new IllegalStateException("the offscreen framebuffer is incomplete (0x" + Integer.toHexString(status) + ")");
         }
+    }
+
+    private void deleteFramebuffers() {
+        if (framebuffer == 0) return;
+        glDeleteFramebuffers(new int[] {framebuffer, colourFramebuffer});
+        glDeleteTextures(new int[] {colourTexture, idTexture, depthTexture, leafTexture});
+        glDeleteRenderbuffers(depthBuffer);
+        framebuffer = 0;
     }
 
     private int attachment(int internal, int format, int type, int slot) {
@@ -230,71 +245,39 @@ public final class LiveRenderer implements AutoCloseable {
         return t;
     }
 
-    /** Clears the whole framebuffer (call before drawing one or more viewports). */
+    /** Clears the whole colour image to the grey between viewports (call before drawing one or more viewports). */
     public void clear() {
-        glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+        glBindFramebuffer(GL_FRAMEBUFFER, colourFramebuffer);
         glViewport(0, 0, width, height);
         glClearBufferfv(GL_COLOR, 0, new float[] {0.2f, 0.2f, 0.2f, 1});
-        glClearBufferiv(GL_COLOR, 1, new int[] {0, 0, 0, 0});
-        glClearBufferfv(GL_COLOR, 2, new float[] {Float.POSITIVE_INFINITY, 0, 0, 0});
-        glClearBufferfv(GL_DEPTH, 0, new float[] {1});
     }
 
     /**
      * Draws the scene through {@code view} into the viewport ({@code x}, {@code y} from the top
-     * left, {@code w × h} pixels) of the framebuffer; {@code flatIds} draws the id pass's flat
-     * colours instead of shading.
+     * left, {@code w × h} pixels): the geometry pass (ids, distances) and the shading pass (colour).
      */
-    public void draw(ViewCamera view, int x, int y, int w, int h, Overlay overlay, boolean flatIds) {
+    public void draw(ViewCamera view, int x, int y, int w, int h, Overlay overlay) {
         if (scene == null) throw new IllegalStateException("no scene: call setScene first");
         int glY = height - y - h;
         glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
         glViewport(x, glY, w, h);
         glEnable(GL_SCISSOR_TEST);
         glScissor(x, glY, w, h);
+        glClearBufferiv(GL_COLOR, 0, new int[] {0, 0, 0, 0});
+        glClearBufferfv(GL_COLOR, 1, new float[] {Float.POSITIVE_INFINITY, 0, 0, 0});
+        glClearBufferiv(GL_COLOR, 2, new int[] {0, 0, 0, 0});
+        glClearBufferfv(GL_DEPTH, 0, new float[] {1});
 
-        glDisable(GL_DEPTH_TEST);
-        glDisable(GL_CULL_FACE);
-        glUseProgram(backgroundProgram);
-        cameraUniforms(backgroundProgram, view, x, glY, w, h, overlay);
-        glBindVertexArray(fullVao);
-        glDrawArrays(GL_TRIANGLES, 0, 3);
-
+        // Geometry: every entity's proxy, ray-cast per fragment; the depth test keeps the nearest hit.
         glEnable(GL_DEPTH_TEST);
         glDepthFunc(GL_LESS);
         glEnable(GL_DEPTH_CLAMP);
-        glUseProgram(entityProgram);
-        cameraUniforms(entityProgram, view, x, glY, w, h, overlay);
         int p = entityProgram;
-        glActiveTexture(GL_TEXTURE1);
-        glBindTexture(GL_TEXTURE_BUFFER, sceneTexture);
-        glUniform1i(glGetUniformLocation(p, "scene"), 1);
-        glActiveTexture(GL_TEXTURE2);
-        glBindTexture(GL_TEXTURE_BUFFER, directoryTexture);
-        glUniform1i(glGetUniformLocation(p, "directory"), 2);
-        glActiveTexture(GL_TEXTURE0);
-        glUniform1i(glGetUniformLocation(p, "entityCount"), scene.entityOffset.length);
-        glUniform1i(glGetUniformLocation(p, "shadowEntities"), SHADOW_ENTITY_LIMIT);
-        glUniform1i(glGetUniformLocation(p, "shadowLights"), SHADOW_LIGHTS);
+        glUseProgram(p);
+        cameraUniforms(p, view, x, glY, w, h, overlay);
+        sceneTexture(p);
         glUniform1f(glGetUniformLocation(p, "depthScale"), (float) depthScale(view));
-        glUniform1i(glGetUniformLocation(p, "lightCount"), scene.lightCount);
-        int n = scene.lightCount;
-        if (n > 0) {
-            float[] a = new float[4 * n], b = new float[4 * n], c = new float[4 * n];
-            for (int i = 0; i < n; i++) {
-                System.arraycopy(scene.lights, 12 * i, a, 4 * i, 4);
-                System.arraycopy(scene.lights, 12 * i + 4, b, 4 * i, 4);
-                System.arraycopy(scene.lights, 12 * i + 8, c, 4 * i, 4);
-            }
-            glUniform4fv(glGetUniformLocation(p, "lightA"), a);
-            glUniform4fv(glGetUniformLocation(p, "lightB"), b);
-            glUniform4fv(glGetUniformLocation(p, "lightC"), c);
-        }
-        glUniform1i(glGetUniformLocation(p, "selected"), overlay.selected() + 1);
-        glUniform1i(glGetUniformLocation(p, "hovered"), overlay.hovered() + 1);
-        glUniform1i(glGetUniformLocation(p, "flatIds"), flatIds ? 1 : 0);
         glUniformMatrix4fv(glGetUniformLocation(p, "viewProjection"), false, view.projection((double) w / h));
-
         if (scene.boundedOffsets.length > 0) {
             // Back faces only: they cover every pixel whose ray meets the box, the camera inside it included.
             glEnable(GL_CULL_FACE);
@@ -310,10 +293,54 @@ public final class LiveRenderer implements AutoCloseable {
             glBindVertexArray(fullVao);
             glDrawArraysInstanced(GL_TRIANGLES, 0, 3, scene.unboundedOffsets.length);
         }
-        glBindVertexArray(0);
         glDisable(GL_DEPTH_CLAMP);
+        glDisable(GL_DEPTH_TEST);
+
+        // Shading: once per pixel, from what the geometry pass kept.
+        glBindFramebuffer(GL_FRAMEBUFFER, colourFramebuffer);
+        p = shadeProgram;
+        glUseProgram(p);
+        cameraUniforms(p, view, x, glY, w, h, overlay);
+        sceneTexture(p);
+        bind(p, "ids", 3, GL_TEXTURE_2D, idTexture);
+        bind(p, "depths", 4, GL_TEXTURE_2D, depthTexture);
+        bind(p, "leaves", 5, GL_TEXTURE_2D, leafTexture);
+        bind(p, "directory", 2, GL_TEXTURE_BUFFER, directoryTexture);
+        glActiveTexture(GL_TEXTURE0);
+        glUniform1i(glGetUniformLocation(p, "entityCount"), scene.entityOffset.length);
+        glUniform1i(glGetUniformLocation(p, "shadowEntities"), SHADOW_ENTITY_LIMIT);
+        glUniform1i(glGetUniformLocation(p, "shadowLights"), SHADOW_LIGHTS);
+        glUniform1i(glGetUniformLocation(p, "lightCount"), scene.lightCount);
+        int n = scene.lightCount;
+        if (n > 0) {
+            float[] a = new float[4 * n], b = new float[4 * n], c = new float[4 * n];
+            for (int i = 0; i < n; i++) {
+                System.arraycopy(scene.lights, 12 * i, a, 4 * i, 4);
+                System.arraycopy(scene.lights, 12 * i + 4, b, 4 * i, 4);
+                System.arraycopy(scene.lights, 12 * i + 8, c, 4 * i, 4);
+            }
+            glUniform4fv(glGetUniformLocation(p, "lightA"), a);
+            glUniform4fv(glGetUniformLocation(p, "lightB"), b);
+            glUniform4fv(glGetUniformLocation(p, "lightC"), c);
+        }
+        glUniform1i(glGetUniformLocation(p, "selected"), overlay.selected() + 1);
+        glUniform1i(glGetUniformLocation(p, "hovered"), overlay.hovered() + 1);
+        glBindVertexArray(fullVao);
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+        glBindVertexArray(0);
         glDisable(GL_SCISSOR_TEST);
         check("drawing");
+    }
+
+    private void sceneTexture(int p) {
+        bind(p, "scene", 1, GL_TEXTURE_BUFFER, sceneTexture);
+    }
+
+    private static void bind(int p, String name, int unit, int target, int texture) {
+        glActiveTexture(GL_TEXTURE0 + unit);
+        glBindTexture(target, texture);
+        glUniform1i(glGetUniformLocation(p, name), unit);
+        glActiveTexture(GL_TEXTURE0);
     }
 
     /**
@@ -372,10 +399,10 @@ public final class LiveRenderer implements AutoCloseable {
         glUniform3f(glGetUniformLocation(p, name), (float) v.x(), (float) v.y(), (float) v.z());
     }
 
-    /** The colour attachment as packed 0xRRGGBB ints, rows top to bottom. */
+    /** The colour image as packed 0xRRGGBB ints, rows top to bottom. */
     public int[] readColour() {
         ByteBuffer b = BufferUtils.createByteBuffer(width * height * 4);
-        glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+        glBindFramebuffer(GL_FRAMEBUFFER, colourFramebuffer);
         glReadBuffer(GL_COLOR_ATTACHMENT0);
         glPixelStorei(GL_PACK_ALIGNMENT, 1);
         glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, b);
@@ -394,7 +421,7 @@ public final class LiveRenderer implements AutoCloseable {
     public int[] readIds() {
         IntBuffer b = BufferUtils.createIntBuffer(width * height);
         glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
-        glReadBuffer(GL_COLOR_ATTACHMENT1);
+        glReadBuffer(GL_COLOR_ATTACHMENT0);
         glReadPixels(0, 0, width, height, GL_RED_INTEGER, GL_INT, b);
         int[] out = new int[width * height];
         for (int row = 0; row < height; row++) {
@@ -408,7 +435,7 @@ public final class LiveRenderer implements AutoCloseable {
     public int idAt(int x, int y) {
         IntBuffer b = BufferUtils.createIntBuffer(1);
         glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
-        glReadBuffer(GL_COLOR_ATTACHMENT1);
+        glReadBuffer(GL_COLOR_ATTACHMENT0);
         glReadPixels(x, height - 1 - y, 1, 1, GL_RED_INTEGER, GL_INT, b);
         return IdColors.entityIndex(b.get(0));
     }
@@ -417,7 +444,7 @@ public final class LiveRenderer implements AutoCloseable {
     public float[] readDepth() {
         FloatBuffer b = BufferUtils.createFloatBuffer(width * height);
         glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
-        glReadBuffer(GL_COLOR_ATTACHMENT2);
+        glReadBuffer(GL_COLOR_ATTACHMENT1);
         glReadPixels(0, 0, width, height, GL_RED, GL_FLOAT, b);
         float[] out = new float[width * height];
         for (int row = 0; row < height; row++) {
@@ -433,17 +460,12 @@ public final class LiveRenderer implements AutoCloseable {
 
     @Override
     public void close() {
-        if (framebuffer != 0) {
-            glDeleteFramebuffers(framebuffer);
-            glDeleteTextures(new int[] {colourTexture, idTexture, depthTexture});
-            glDeleteRenderbuffers(depthBuffer);
-            framebuffer = 0;
-        }
+        deleteFramebuffers();
         glDeleteTextures(new int[] {sceneTexture, directoryTexture, panoramaTexture});
         glDeleteBuffers(new int[] {sceneBuffer, directoryBuffer, cubeVbo, instanceVbo, fullInstanceVbo});
         glDeleteVertexArrays(new int[] {cubeVao, fullVao});
         glDeleteProgram(entityProgram);
-        glDeleteProgram(backgroundProgram);
+        glDeleteProgram(shadeProgram);
     }
 
     private static void check(String what) {

@@ -270,7 +270,7 @@ public final class LiveViewPanel extends JPanel implements AutoCloseable {
             renderer.clear();
             for (Map.Entry<Viewport, Rectangle> e : rects.entrySet()) {
                 Rectangle r = e.getValue();
-                renderer.draw(views.get(e.getKey()), r.x, r.y, r.width, r.height, overlays.get(e.getKey()), false);
+                renderer.draw(views.get(e.getKey()), r.x, r.y, r.width, r.height, overlays.get(e.getKey()));
             }
             BufferedImage image = new BufferedImage(w, h, BufferedImage.TYPE_INT_RGB);
             int[] pixels = ((DataBufferInt) image.getRaster().getDataBuffer()).getData();

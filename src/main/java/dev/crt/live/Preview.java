@@ -37,14 +37,14 @@ public final class Preview implements AutoCloseable {
     /** Draws {@code scene} from its camera at its settings' size; then read a pass. */
     public void draw(Scene scene) {
         draw(SceneConverter.convert(scene), ViewCamera.of(scene.settings().camera()), scene.settings().width(),
-                scene.settings().height(), false);
+                scene.settings().height());
     }
 
-    void draw(GpuScene gpu, ViewCamera view, int width, int height, boolean flatIds) {
+    void draw(GpuScene gpu, ViewCamera view, int width, int height) {
         renderer.setScene(gpu);
         renderer.resize(width, height);
         renderer.clear();
-        renderer.draw(view, 0, 0, width, height, LiveRenderer.Overlay.NONE, flatIds);
+        renderer.draw(view, 0, 0, width, height, LiveRenderer.Overlay.NONE);
     }
 
     /** The renderer, for callers that draw their own views. */

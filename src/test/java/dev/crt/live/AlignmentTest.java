@@ -86,14 +86,14 @@ class AlignmentTest {
         dev.crt.scene.Camera c = scene.settings().camera();
         dev.crt.scene.Camera off = new dev.crt.scene.Camera(c.position(), c.pointing(), c.fov() * 1.02, c.roll(),
                 c.aperture(), c.focalDistance(), c.apertureShape(), c.span());
-        preview.draw(SceneConverter.convert(scene), ViewCamera.of(off), WIDTH, HEIGHT, false);
+        preview.draw(SceneConverter.convert(scene), ViewCamera.of(off), WIDTH, HEIGHT);
         int[] ids = tracer.idPass();
         double[] depth = tracer.depthPass();
         Comparison bad = compare(ids, depth, preview.ids(), preview.depth(), WIDTH, HEIGHT);
         assertThat((double) bad.depthWithin / bad.bothHit).isLessThan(0.99);
         dev.crt.scene.Camera wide = new dev.crt.scene.Camera(c.position(), c.pointing(), c.fov() * 1.1, c.roll(),
                 c.aperture(), c.focalDistance(), c.apertureShape(), c.span());
-        preview.draw(SceneConverter.convert(scene), ViewCamera.of(wide), WIDTH, HEIGHT, false);
+        preview.draw(SceneConverter.convert(scene), ViewCamera.of(wide), WIDTH, HEIGHT);
         Comparison worse = compare(ids, depth, preview.ids(), preview.depth(), WIDTH, HEIGHT);
         assertThat((double) worse.agreeing / worse.compared).isLessThan(0.99);
     }
