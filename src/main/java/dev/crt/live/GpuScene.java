@@ -37,6 +37,8 @@ public final class GpuScene {
     /** Bounded entities: their header offsets and boxes (min xyz, max xyz) for the proxy cubes. */
     final int[] boundedOffsets;
     final float[] boundedBoxes;
+    /** How many of the bounded entities, listed first, are a single primitive (drawn without the CSG walk). */
+    final int boundedPrimitives;
     /** Entities with infinite bounds, drawn by a full-screen pass. */
     final int[] unboundedOffsets;
     /** Per light three vec4: (kind, position or direction towards the light), (colour, ambient), (falloff, 0, 0, 0). */
@@ -48,7 +50,7 @@ public final class GpuScene {
     final Aabb bounds;
 
     GpuScene(float[] data, int texels, int[] entityOffset, Aabb[] entityBounds, int[] boundedOffsets,
-            float[] boundedBoxes, int[] unboundedOffsets, float[] lights, int lightCount, Background background,
+            float[] boundedBoxes, int boundedPrimitives, int[] unboundedOffsets, float[] lights, int lightCount, Background background,
             double gamma, Camera camera, Aabb bounds) {
         this.data = data;
         this.texels = texels;
@@ -56,6 +58,7 @@ public final class GpuScene {
         this.entityBounds = entityBounds;
         this.boundedOffsets = boundedOffsets;
         this.boundedBoxes = boundedBoxes;
+        this.boundedPrimitives = boundedPrimitives;
         this.unboundedOffsets = unboundedOffsets;
         this.lights = lights;
         this.lightCount = lightCount;

@@ -31,8 +31,11 @@ public final class LiveRenderer implements AutoCloseable {
     /** Lights that cast shadows: the first ones of the scene. */
     public static final int SHADOW_LIGHTS = 4;
 
-    private final int entityProgram, shadeProgram;
-    private final int cubeVao, cubeVbo, instanceVbo, fullVao, fullInstanceVbo;
+    /** Geometry programs for one-primitive entities and for CSG entities, and the shading program. */
+    private final int primitiveProgram, entityProgram, shadeProgram;
+    private final int cubeVao, cubeVbo, instanceVbo, csgVao, csgInstanceVbo, fullVao, fullInstanceVbo;
+    /** Proxy boxes of one-primitive entities (cubeVao) and of CSG entities (csgVao). */
+    private int primitiveInstances, csgInstances;
     private final int sceneBuffer, sceneTexture, directoryBuffer, directoryTexture;
     private int panoramaTexture;
     /** The geometry pass's framebuffer (id, distance, primitive address, depth) and the shaded colour's. */
@@ -48,6 +51,8 @@ public final class LiveRenderer implements AutoCloseable {
     public LiveRenderer() {
         String common = "#version 330 core\n" + resource("common.glsl") + resource("scene.glsl");
         entityProgram = program(resource("entity.vert"), common + resource("entity.frag"));
+        primitiveProgram = program(resource("entity.vert"), common.replaceFirst("\n", "\n#define PRIMITIVES\n")
+                + resource("entity.frag"));
         shadeProgram = program(resource("fullscreen.vert"), common + resource("shade.frag"));
 
         cubeVao = glGenVertexArrays();
@@ -59,6 +64,15 @@ public final class LiveRenderer implements AutoCloseable {
         glVertexAttribPointer(0, 3, GL_FLOAT, false, 12, 0);
         instanceVbo = glGenBuffers();
         glBindBuffer(GL_ARRAY_BUFFER, instanceVbo);
+        instanceAttributes();
+
+        csgVao = glGenVertexArrays();
+        glBindVertexArray(csgVao);
+        glBindBuffer(GL_ARRAY_BUFFER, cubeVbo);
+        glEnableVertexAttribArray(0);
+        glVertexAttribPointer(0, 3, GL_FLOAT, false, 12, 0);
+        csgInstanceVbo = glGenBuffers();
+        glBindBuffer(GL_ARRAY_BUFFER, csgInstanceVbo);
         instanceAttributes();
 
         fullVao = glGenVertexArrays();
@@ -147,10 +161,16 @@ public final class LiveRenderer implements AutoCloseable {
         glTexBuffer(GL_TEXTURE_BUFFER, GL_R32I, directoryBuffer);
 
         glBindBuffer(GL_ARRAY_BUFFER, instanceVbo);
-        glBufferData(GL_ARRAY_BUFFER, instances(next.boundedBoxes, next.boundedOffsets), GL_DYNAMIC_DRAW);
-        glBindBuffer(GL_ARRAY_BUFFER, fullInstanceVbo);
-        glBufferData(GL_ARRAY_BUFFER, instances(new float[6 * next.unboundedOffsets.length], next.unboundedOffsets),
+        glBufferData(GL_ARRAY_BUFFER, instances(next.boundedBoxes, next.boundedOffsets, 0, next.boundedPrimitives),
                 GL_DYNAMIC_DRAW);
+        glBindBuffer(GL_ARRAY_BUFFER, csgInstanceVbo);
+        glBufferData(GL_ARRAY_BUFFER, instances(next.boundedBoxes, next.boundedOffsets, next.boundedPrimitives,
+                next.boundedOffsets.length), GL_DYNAMIC_DRAW);
+        primitiveInstances = next.boundedPrimitives;
+        csgInstances = next.boundedOffsets.length - next.boundedPrimitives;
+        glBindBuffer(GL_ARRAY_BUFFER, fullInstanceVbo);
+        glBufferData(GL_ARRAY_BUFFER, instances(new float[6 * next.unboundedOffsets.length], next.unboundedOffsets,
+                0, next.unboundedOffsets.length), GL_DYNAMIC_DRAW);
 
         if (next.background instanceof PanoramaBackground p && p.image() != uploadedPanorama) {
             uploadPanorama(p.image(), next.gamma);
@@ -165,13 +185,15 @@ public final class LiveRenderer implements AutoCloseable {
     /** How many floats the last {@link #setScene} sent to the GPU (for tests and benchmarks). */
     public long lastUploadFloats() { return lastUploadFloats; }
 
-    private static ByteBuffer instances(float[] boxes, int[] offsets) {
-        ByteBuffer b = BufferUtils.createByteBuffer(Math.max(28, 28 * offsets.length));
-        for (int i = 0; i < offsets.length; i++) {
+    /** Instance records (box min, box max, header offset) of entries [from, to). */
+    private static ByteBuffer instances(float[] boxes, int[] offsets, int from, int to) {
+        int n = to - from;
+        ByteBuffer b = BufferUtils.createByteBuffer(Math.max(28, 28 * n));
+        for (int i = from; i < to; i++) {
             for (int k = 0; k < 6; k++) b.putFloat(boxes[6 * i + k]);
             b.putInt(offsets[i]);
         }
-        return b.position(0).limit(28 * offsets.length == 0 ? 28 : 28 * offsets.length);
+        return b.position(0).limit(Math.max(28, 28 * n));
     }
 
     private void uploadPanorama(Picture pic, double gamma) {
@@ -273,23 +295,25 @@ public final class LiveRenderer implements AutoCloseable {
         glDepthFunc(GL_LESS);
         glEnable(GL_DEPTH_CLAMP);
         int p = entityProgram;
-        glUseProgram(p);
-        cameraUniforms(p, view, x, glY, w, h, overlay);
-        sceneTexture(p);
-        glUniform1f(glGetUniformLocation(p, "depthScale"), (float) depthScale(view));
-        glUniformMatrix4fv(glGetUniformLocation(p, "viewProjection"), false, view.projection((double) w / h));
         if (scene.boundedOffsets.length > 0) {
             // Back faces only: they cover every pixel whose ray meets the box, the camera inside it included.
             glEnable(GL_CULL_FACE);
             glCullFace(GL_FRONT);
             glFrontFace(frontFace(view));
-            glUniform1i(glGetUniformLocation(p, "fullScreen"), 0);
-            glBindVertexArray(cubeVao);
-            glDrawArraysInstanced(GL_TRIANGLES, 0, 36, scene.boundedOffsets.length);
+            if (primitiveInstances > 0) {
+                geometryProgram(primitiveProgram, view, x, glY, w, h, overlay, false);
+                glBindVertexArray(cubeVao);
+                glDrawArraysInstanced(GL_TRIANGLES, 0, 36, primitiveInstances);
+            }
+            if (csgInstances > 0) {
+                geometryProgram(entityProgram, view, x, glY, w, h, overlay, false);
+                glBindVertexArray(csgVao);
+                glDrawArraysInstanced(GL_TRIANGLES, 0, 36, csgInstances);
+            }
             glDisable(GL_CULL_FACE);
         }
+        geometryProgram(p, view, x, glY, w, h, overlay, true);
         if (scene.unboundedOffsets.length > 0) {
-            glUniform1i(glGetUniformLocation(p, "fullScreen"), 1);
             glBindVertexArray(fullVao);
             glDrawArraysInstanced(GL_TRIANGLES, 0, 3, scene.unboundedOffsets.length);
         }
@@ -330,6 +354,15 @@ public final class LiveRenderer implements AutoCloseable {
         glBindVertexArray(0);
         glDisable(GL_SCISSOR_TEST);
         check("drawing");
+    }
+
+    private void geometryProgram(int p, ViewCamera view, int x, int y, int w, int h, Overlay overlay, boolean fullScreen) {
+        glUseProgram(p);
+        cameraUniforms(p, view, x, y, w, h, overlay);
+        sceneTexture(p);
+        glUniform1f(glGetUniformLocation(p, "depthScale"), (float) depthScale(view));
+        glUniformMatrix4fv(glGetUniformLocation(p, "viewProjection"), false, view.projection((double) w / h));
+        glUniform1i(glGetUniformLocation(p, "fullScreen"), fullScreen ? 1 : 0);
     }
 
     private void sceneTexture(int p) {
@@ -462,9 +495,10 @@ public final class LiveRenderer implements AutoCloseable {
     public void close() {
         deleteFramebuffers();
         glDeleteTextures(new int[] {sceneTexture, directoryTexture, panoramaTexture});
-        glDeleteBuffers(new int[] {sceneBuffer, directoryBuffer, cubeVbo, instanceVbo, fullInstanceVbo});
-        glDeleteVertexArrays(new int[] {cubeVao, fullVao});
+        glDeleteBuffers(new int[] {sceneBuffer, directoryBuffer, cubeVbo, instanceVbo, csgInstanceVbo, fullInstanceVbo});
+        glDeleteVertexArrays(new int[] {cubeVao, csgVao, fullVao});
         glDeleteProgram(entityProgram);
+        glDeleteProgram(primitiveProgram);
         glDeleteProgram(shadeProgram);
     }
 

@@ -37,8 +37,10 @@ public final class SceneConverter {
         int n = entities.size();
         int[] offsets = new int[n];
         Aabb[] bounds = new Aabb[n];
+        // Bounded entities: one-primitive ones from the front, CSG ones from the back, then reversed into place.
         int[] bounded = new int[n];
         float[] boxes = new float[6 * n];
+        int nc = 0;
         int[] unbounded = new int[n];
         int nb = 0, nu = 0;
         Aabb all = Aabb.EMPTY;
@@ -49,9 +51,9 @@ public final class SceneConverter {
             bounds[i] = b;
             if (b.isEmpty()) continue;
             if (b.isFinite()) {
-                bounded[nb] = offsets[i];
-                put(boxes, 6 * nb, b);
-                nb++;
+                int at = e instanceof Primitive ? nb++ : n - 1 - nc++;
+                bounded[at] = offsets[i];
+                put(boxes, 6 * at, b);
                 all = all.union(b);
             } else {
                 unbounded[nu++] = offsets[i];
@@ -64,8 +66,15 @@ public final class SceneConverter {
         }
         float[] lights = new float[12 * sceneLights.size()];
         for (int i = 0; i < sceneLights.size(); i++) light(sceneLights.get(i), lights, 12 * i);
-        return new GpuScene(data, size / 4, offsets, bounds, Arrays.copyOf(bounded, nb),
-                Arrays.copyOf(boxes, 6 * nb), Arrays.copyOf(unbounded, nu), lights, sceneLights.size(),
+        int[] boundedAll = new int[nb + nc];
+        float[] boxesAll = new float[6 * (nb + nc)];
+        System.arraycopy(bounded, 0, boundedAll, 0, nb);
+        System.arraycopy(boxes, 0, boxesAll, 0, 6 * nb);
+        for (int k = 0; k < nc; k++) {
+            boundedAll[nb + k] = bounded[n - nc + k];
+            System.arraycopy(boxes, 6 * (n - nc + k), boxesAll, 6 * (nb + k), 6);
+        }
+        return new GpuScene(data, size / 4, offsets, bounds, boundedAll, boxesAll, nb, Arrays.copyOf(unbounded, nu), lights, sceneLights.size(),
                 scene.settings().background(), scene.settings().gamma(), scene.settings().camera(), all);
     }
 
