@@ -31,8 +31,11 @@ public final class LiveRenderer implements AutoCloseable {
     /** Lights that cast shadows: the first ones of the scene. */
     public static final int SHADOW_LIGHTS = 4;
 
-    /** Geometry programs for one-primitive entities and for CSG entities, and the shading program. */
-    private final int primitiveProgram, entityProgram, shadeProgram;
+    /** Geometry programs for one-primitive entities and for CSG entities. */
+    private final int primitiveProgram, entityProgram;
+    /** Shading and background programs by background kind, compiled when first needed. */
+    private final int[] shadePrograms = new int[3], backgroundPrograms = new int[3];
+    private final String common;
     private final int cubeVao, cubeVbo, instanceVbo, csgVao, csgInstanceVbo, fullVao, fullInstanceVbo;
     /** Proxy boxes of one-primitive entities (cubeVao) and of CSG entities (csgVao). */
     private int primitiveInstances, csgInstances;
@@ -49,11 +52,10 @@ public final class LiveRenderer implements AutoCloseable {
 
     /** Compiles the shaders and makes the buffers; the context must be current. */
     public LiveRenderer() {
-        String common = "#version 330 core\n" + resource("common.glsl") + resource("scene.glsl");
-        entityProgram = program(resource("entity.vert"), common + resource("entity.frag"));
-        primitiveProgram = program(resource("entity.vert"), common.replaceFirst("\n", "\n#define PRIMITIVES\n")
+        common = resource("common.glsl") + resource("scene.glsl");
+        entityProgram = program(resource("entity.vert"), header(0) + common + resource("entity.frag"));
+        primitiveProgram = program(resource("entity.vert"), header(0) + "#define PRIMITIVES\n" + common
                 + resource("entity.frag"));
-        shadeProgram = program(resource("fullscreen.vert"), common + resource("shade.frag"));
 
         cubeVao = glGenVertexArrays();
         glBindVertexArray(cubeVao);
@@ -88,6 +90,27 @@ public final class LiveRenderer implements AutoCloseable {
         directoryTexture = glGenTextures();
         panoramaTexture = glGenTextures();
         check("creating the renderer");
+    }
+
+    private static String header(int backgroundKind) {
+        return "#version 330 core\n#define BACKGROUND_KIND " + backgroundKind + "\n";
+    }
+
+    private int shadeProgram(int kind, boolean background) {
+        int[] programs = background ? backgroundPrograms : shadePrograms;
+        if (programs[kind] == 0) {
+            programs[kind] = program(resource("fullscreen.vert"), header(kind) + (background ? "#define BACKGROUND\n" : "")
+                    + common + resource("shade.frag"));
+        }
+        return programs[kind];
+    }
+
+    private int backgroundKind() {
+        Background bg = scene.background;
+        if (bg instanceof SolidBackground) return 0;
+        if (bg instanceof GradientBackground) return 1;
+        if (bg instanceof PanoramaBackground) return 2;
+        throw new UnsupportedSceneException("the live view cannot show a " + bg.getClass().getSimpleName() + " yet");
     }
 
     /** Per instance: box min (3 floats), box max (3 floats), header offset (1 int); 28 bytes. */
@@ -231,13 +254,15 @@ public final class LiveRenderer implements AutoCloseable {
         leafTexture = attachment(GL_R32I, GL_RED_INTEGER, GL_INT, GL_COLOR_ATTACHMENT2);
         depthBuffer = glGenRenderbuffers();
         glBindRenderbuffer(GL_RENDERBUFFER, depthBuffer);
-        glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT32F, w, h);
-        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depthBuffer);
+        glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH32F_STENCIL8, w, h);
+        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER, depthBuffer);
         glDrawBuffers(new int[] {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2});
         complete();
         colourFramebuffer = glGenFramebuffers();
         glBindFramebuffer(GL_FRAMEBUFFER, colourFramebuffer);
         colourTexture = attachment(GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE, GL_COLOR_ATTACHMENT0);
+        // The same stencil: the shading pass reads which pixels the geometry pass hit.
+        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER, depthBuffer);
         glDrawBuffers(new int[] {GL_COLOR_ATTACHMENT0});
         complete();
     }
@@ -267,16 +292,27 @@ public final class LiveRenderer implements AutoCloseable {
         return t;
     }
 
-    /** Clears the whole colour image to the grey between viewports (call before drawing one or more viewports). */
+    /**
+     * Clears the framebuffers before drawing one or more viewports: colour to the grey between
+     * viewports, ids to background, distances to +∞. Whole-buffer clears, never scissored: llvmpipe
+     * clears whole buffers cheaply and scissored ones pixel by pixel.
+     */
     public void clear() {
+        glDisable(GL_SCISSOR_TEST);
         glBindFramebuffer(GL_FRAMEBUFFER, colourFramebuffer);
-        glViewport(0, 0, width, height);
         glClearBufferfv(GL_COLOR, 0, new float[] {0.2f, 0.2f, 0.2f, 1});
+        glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+        glClearBufferiv(GL_COLOR, 0, new int[] {0, 0, 0, 0});
+        glClearBufferfv(GL_COLOR, 1, new float[] {Float.POSITIVE_INFINITY, 0, 0, 0});
+        glClearBufferiv(GL_COLOR, 2, new int[] {0, 0, 0, 0});
+        glStencilMask(0xFF);
+        glClearBufferfi(GL_DEPTH_STENCIL, 0, 1, 0);
     }
 
     /**
      * Draws the scene through {@code view} into the viewport ({@code x}, {@code y} from the top
      * left, {@code w × h} pixels): the geometry pass (ids, distances) and the shading pass (colour).
+     * Call {@link #clear} first, once for all the viewports of a frame.
      */
     public void draw(ViewCamera view, int x, int y, int w, int h, Overlay overlay) {
         if (scene == null) throw new IllegalStateException("no scene: call setScene first");
@@ -285,12 +321,13 @@ public final class LiveRenderer implements AutoCloseable {
         glViewport(x, glY, w, h);
         glEnable(GL_SCISSOR_TEST);
         glScissor(x, glY, w, h);
-        glClearBufferiv(GL_COLOR, 0, new int[] {0, 0, 0, 0});
-        glClearBufferfv(GL_COLOR, 1, new float[] {Float.POSITIVE_INFINITY, 0, 0, 0});
-        glClearBufferiv(GL_COLOR, 2, new int[] {0, 0, 0, 0});
-        glClearBufferfv(GL_DEPTH, 0, new float[] {1});
 
-        // Geometry: every entity's proxy, ray-cast per fragment; the depth test keeps the nearest hit.
+        // Geometry: every entity's proxy, ray-cast per fragment; the depth test keeps the nearest hit
+        // and marks the pixel in the stencil buffer, so shading runs only where something was hit.
+        glEnable(GL_STENCIL_TEST);
+        glStencilMask(0xFF);
+        glStencilFunc(GL_ALWAYS, 1, 0xFF);
+        glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
         glEnable(GL_DEPTH_TEST);
         glDepthFunc(GL_LESS);
         glEnable(GL_DEPTH_CLAMP);
@@ -320,10 +357,21 @@ public final class LiveRenderer implements AutoCloseable {
         glDisable(GL_DEPTH_CLAMP);
         glDisable(GL_DEPTH_TEST);
 
-        // Shading: once per pixel, from what the geometry pass kept.
+        // Shading: once per pixel, from what the geometry pass kept; the background where it found nothing.
         glBindFramebuffer(GL_FRAMEBUFFER, colourFramebuffer);
-        p = shadeProgram;
+        glStencilMask(0);
+        glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+        glBindVertexArray(fullVao);
+        int kind = backgroundKind();
+        p = shadeProgram(kind, true);
         glUseProgram(p);
+        cameraUniforms(p, view, x, glY, w, h, overlay);
+        glStencilFunc(GL_EQUAL, 0, 0xFF);
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+
+        p = shadeProgram(kind, false);
+        glUseProgram(p);
+        glStencilFunc(GL_EQUAL, 1, 0xFF);
         cameraUniforms(p, view, x, glY, w, h, overlay);
         sceneTexture(p);
         bind(p, "ids", 3, GL_TEXTURE_2D, idTexture);
@@ -349,9 +397,10 @@ public final class LiveRenderer implements AutoCloseable {
         }
         glUniform1i(glGetUniformLocation(p, "selected"), overlay.selected() + 1);
         glUniform1i(glGetUniformLocation(p, "hovered"), overlay.hovered() + 1);
-        glBindVertexArray(fullVao);
         glDrawArrays(GL_TRIANGLES, 0, 3);
         glBindVertexArray(0);
+        glDisable(GL_STENCIL_TEST);
+        glStencilMask(0xFF);
         glDisable(GL_SCISSOR_TEST);
         check("drawing");
     }
@@ -408,23 +457,18 @@ public final class LiveRenderer implements AutoCloseable {
         glUniform1i(glGetUniformLocation(p, "gridAxis"), overlay.gridAxis());
         Background bg = scene.background;
         if (bg instanceof SolidBackground s) {
-            glUniform1i(glGetUniformLocation(p, "backgroundKind"), 0);
             glUniform3f(glGetUniformLocation(p, "background0"), (float) s.color().r(), (float) s.color().g(),
                     (float) s.color().b());
         } else if (bg instanceof GradientBackground g) {
-            glUniform1i(glGetUniformLocation(p, "backgroundKind"), 1);
             glUniform3f(glGetUniformLocation(p, "background0"), (float) g.horizon().r(), (float) g.horizon().g(),
                     (float) g.horizon().b());
             glUniform3f(glGetUniformLocation(p, "background1"), (float) g.sky().r(), (float) g.sky().g(),
                     (float) g.sky().b());
         } else if (bg instanceof PanoramaBackground pano) {
-            glUniform1i(glGetUniformLocation(p, "backgroundKind"), 2);
             glUniform1f(glGetUniformLocation(p, "panoramaAngle"), (float) pano.angle());
             glActiveTexture(GL_TEXTURE0);
             glBindTexture(GL_TEXTURE_2D, panoramaTexture);
             glUniform1i(glGetUniformLocation(p, "panorama"), 0);
-        } else {
-            throw new UnsupportedSceneException("the live view cannot show a " + bg.getClass().getSimpleName() + " yet");
         }
     }
 
@@ -499,7 +543,8 @@ public final class LiveRenderer implements AutoCloseable {
         glDeleteVertexArrays(new int[] {cubeVao, csgVao, fullVao});
         glDeleteProgram(entityProgram);
         glDeleteProgram(primitiveProgram);
-        glDeleteProgram(shadeProgram);
+        for (int p : shadePrograms) if (p != 0) glDeleteProgram(p);
+        for (int p : backgroundPrograms) if (p != 0) glDeleteProgram(p);
     }
 
     private static void check(String what) {

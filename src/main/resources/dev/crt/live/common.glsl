@@ -8,7 +8,6 @@ uniform vec3 cameraForward;
 uniform vec3 cameraRight;
 uniform vec3 cameraUp;
 uniform float halfHeight;     // tan(fov/2), or the half height of an orthographic view in scene units
-uniform int backgroundKind;   // 0 colour, 1 gradient, 2 panorama
 uniform vec3 background0;
 uniform vec3 background1;
 uniform float panoramaAngle;
@@ -36,15 +35,19 @@ void primaryRay(out vec3 origin, out vec3 direction) {
     }
 }
 
+// BACKGROUND_KIND is defined per program (0 colour, 1 gradient, 2 panorama): llvmpipe runs every
+// branch of a shader for every pixel, so the kinds not used must not be compiled in.
 vec3 backgroundColour(vec3 d) {
-    if (backgroundKind == 0) return background0;
-    if (backgroundKind == 1) {
-        float e = clamp(asin(clamp(d.y / length(d), -1.0, 1.0)) / (PI / 2.0), 0.0, 1.0);
-        return (1.0 - e) * background0 + e * background1;
-    }
+#if BACKGROUND_KIND == 0
+    return background0;
+#elif BACKGROUND_KIND == 1
+    float e = clamp(asin(clamp(d.y / length(d), -1.0, 1.0)) / (PI / 2.0), 0.0, 1.0);
+    return (1.0 - e) * background0 + e * background1;
+#else
     float u = fract(0.5 + (atan(d.x, d.z) + panoramaAngle) / (2.0 * PI));
     float v = 0.5 - asin(clamp(d.y / length(d), -1.0, 1.0)) / PI;
     return textureLod(panorama, vec2(u, v), 0.0).rgb;
+#endif
 }
 
 vec4 encode(vec3 c) {

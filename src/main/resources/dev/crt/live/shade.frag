@@ -1,5 +1,6 @@
-// The shading pass, once per pixel: the background where the geometry pass found nothing, else
-// the Phong terms of rendering-model.md with shadow rays, on the surface the geometry pass found.
+// The shading pass, once per pixel: with BACKGROUND defined, the background (and grid) where the
+// geometry pass found nothing; without, the Phong terms of rendering-model.md with shadow rays on
+// the surface it found. The stencil buffer decides which pixels each program runs on.
 layout(location = 0) out vec4 colour;
 uniform isampler2D ids;
 uniform sampler2D depths;
@@ -42,13 +43,12 @@ vec3 gridOver(vec3 c, vec3 o) {
 void main() {
     vec3 ro, rd;
     primaryRay(ro, rd);
+#ifdef BACKGROUND
+    vec4 c = encode(backgroundColour(rd));
+    colour = grid ? vec4(gridOver(c.rgb, ro), 1.0) : c;
+#else
     ivec2 p = ivec2(gl_FragCoord.xy);
     int id = texelFetch(ids, p, 0).x;
-    if (id == 0) {
-        vec4 c = encode(backgroundColour(rd));
-        colour = grid ? vec4(gridOver(c.rgb, ro), 1.0) : c;
-        return;
-    }
     float t = texelFetch(depths, p, 0).x;
     int L = texelFetch(leaves, p, 0).x;
     vec3 x = ro + t * rd;
@@ -94,4 +94,5 @@ void main() {
     if (id == selected) outColour.rgb = mix(outColour.rgb, vec3(1.0, 0.6, 0.1), 0.35);
     else if (id == hovered) outColour.rgb = mix(outColour.rgb, vec3(0.3, 0.7, 1.0), 0.25);
     colour = outColour;
+#endif
 }
