@@ -12,9 +12,7 @@ mkdir -p bench/results
   java -cp "$cp" dev.crt.live.LiveBenchmark
   ./crt check scenes/csg-sculpture.crt >/dev/null   # builds target/crt.jar first if needed
   for i in 1 2 3; do
-    start=$(date +%s.%N)
-    ./crt preview scenes/csg-sculpture.crt -o target/preview-bench.png -q
-    end=$(date +%s.%N)
-    echo "crt preview scenes/csg-sculpture.crt (960x540), whole process, run $i: $(echo "$end - $start" | bc) s"
-  done
+    /usr/bin/time -f "crt preview scenes/csg-sculpture.crt (960x540), whole process, run $i: %e s wall clock, %U s user + %S s system CPU" \
+      ./crt preview scenes/csg-sculpture.crt -o target/preview-bench.png -q
+  done 2>&1
 } | tee bench/results/live.txt

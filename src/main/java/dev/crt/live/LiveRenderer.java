@@ -31,8 +31,8 @@ public final class LiveRenderer implements AutoCloseable {
     /** Lights that cast shadows: the first ones of the scene. */
     public static final int SHADOW_LIGHTS = 4;
 
-    /** Geometry programs for one-primitive entities and for CSG entities. */
-    private final int primitiveProgram, entityProgram;
+    /** Geometry programs for one-primitive entities and for CSG entities, compiled when first needed. */
+    private int primitiveProgram, entityProgram;
     /** Shading and background programs by background kind, compiled when first needed. */
     private final int[] shadePrograms = new int[3], backgroundPrograms = new int[3];
     private final String common;
@@ -53,9 +53,6 @@ public final class LiveRenderer implements AutoCloseable {
     /** Compiles the shaders and makes the buffers; the context must be current. */
     public LiveRenderer() {
         common = resource("common.glsl") + resource("scene.glsl");
-        entityProgram = program(resource("entity.vert"), header(0) + common + resource("entity.frag"));
-        primitiveProgram = program(resource("entity.vert"), header(0) + "#define PRIMITIVES\n" + common
-                + resource("entity.frag"));
 
         cubeVao = glGenVertexArrays();
         glBindVertexArray(cubeVao);
@@ -94,6 +91,17 @@ public final class LiveRenderer implements AutoCloseable {
 
     private static String header(int backgroundKind) {
         return "#version 330 core\n#define BACKGROUND_KIND " + backgroundKind + "\n";
+    }
+
+    /** The geometry program for one-primitive entities ({@code primitives}) or for CSG entities. */
+    private int geometryProgram(boolean primitives) {
+        if (primitives && primitiveProgram == 0) {
+            primitiveProgram = program(resource("entity.vert"), header(0) + "#define PRIMITIVES\n" + common
+                    + resource("entity.frag"));
+        } else if (!primitives && entityProgram == 0) {
+            entityProgram = program(resource("entity.vert"), header(0) + common + resource("entity.frag"));
+        }
+        return primitives ? primitiveProgram : entityProgram;
     }
 
     private int shadeProgram(int kind, boolean background) {
@@ -331,26 +339,26 @@ public final class LiveRenderer implements AutoCloseable {
         glEnable(GL_DEPTH_TEST);
         glDepthFunc(GL_LESS);
         glEnable(GL_DEPTH_CLAMP);
-        int p = entityProgram;
+        int p;
         if (scene.boundedOffsets.length > 0) {
             // Back faces only: they cover every pixel whose ray meets the box, the camera inside it included.
             glEnable(GL_CULL_FACE);
             glCullFace(GL_FRONT);
             glFrontFace(frontFace(view));
             if (primitiveInstances > 0) {
-                geometryProgram(primitiveProgram, view, x, glY, w, h, overlay, false);
+                useGeometryProgram(geometryProgram(true), view, x, glY, w, h, overlay, false);
                 glBindVertexArray(cubeVao);
                 glDrawArraysInstanced(GL_TRIANGLES, 0, 36, primitiveInstances);
             }
             if (csgInstances > 0) {
-                geometryProgram(entityProgram, view, x, glY, w, h, overlay, false);
+                useGeometryProgram(geometryProgram(false), view, x, glY, w, h, overlay, false);
                 glBindVertexArray(csgVao);
                 glDrawArraysInstanced(GL_TRIANGLES, 0, 36, csgInstances);
             }
             glDisable(GL_CULL_FACE);
         }
-        geometryProgram(p, view, x, glY, w, h, overlay, true);
         if (scene.unboundedOffsets.length > 0) {
+            useGeometryProgram(geometryProgram(false), view, x, glY, w, h, overlay, true);
             glBindVertexArray(fullVao);
             glDrawArraysInstanced(GL_TRIANGLES, 0, 3, scene.unboundedOffsets.length);
         }
@@ -405,7 +413,7 @@ public final class LiveRenderer implements AutoCloseable {
         check("drawing");
     }
 
-    private void geometryProgram(int p, ViewCamera view, int x, int y, int w, int h, Overlay overlay, boolean fullScreen) {
+    private void useGeometryProgram(int p, ViewCamera view, int x, int y, int w, int h, Overlay overlay, boolean fullScreen) {
         glUseProgram(p);
         cameraUniforms(p, view, x, y, w, h, overlay);
         sceneTexture(p);
@@ -541,8 +549,8 @@ public final class LiveRenderer implements AutoCloseable {
         glDeleteTextures(new int[] {sceneTexture, directoryTexture, panoramaTexture});
         glDeleteBuffers(new int[] {sceneBuffer, directoryBuffer, cubeVbo, instanceVbo, csgInstanceVbo, fullInstanceVbo});
         glDeleteVertexArrays(new int[] {cubeVao, csgVao, fullVao});
-        glDeleteProgram(entityProgram);
-        glDeleteProgram(primitiveProgram);
+        if (entityProgram != 0) glDeleteProgram(entityProgram);
+        if (primitiveProgram != 0) glDeleteProgram(primitiveProgram);
         for (int p : shadePrograms) if (p != 0) glDeleteProgram(p);
         for (int p : backgroundPrograms) if (p != 0) glDeleteProgram(p);
     }
