@@ -33,8 +33,12 @@ public final class LiveRenderer implements AutoCloseable {
 
     /** Geometry programs for one-primitive entities and for CSG entities, compiled when first needed. */
     private int primitiveProgram, entityProgram;
-    /** Shading and background programs by background kind, compiled when first needed. */
-    private final int[] shadePrograms = new int[3], backgroundPrograms = new int[3];
+    /**
+     * Shading and background programs by their variant (background kind, grid, shadows), compiled
+     * when first needed: llvmpipe runs every branch for every pixel, so what a frame does not use
+     * is left out of its programs rather than skipped at run time.
+     */
+    private final java.util.Map<String, Integer> shadePrograms = new java.util.HashMap<>();
     private final String common;
     private final int cubeVao, cubeVbo, instanceVbo, csgVao, csgInstanceVbo, fullVao, fullInstanceVbo;
     /** Proxy boxes of one-primitive entities (cubeVao) and of CSG entities (csgVao). */
@@ -104,13 +108,11 @@ public final class LiveRenderer implements AutoCloseable {
         return primitives ? primitiveProgram : entityProgram;
     }
 
-    private int shadeProgram(int kind, boolean background) {
-        int[] programs = background ? backgroundPrograms : shadePrograms;
-        if (programs[kind] == 0) {
-            programs[kind] = program(resource("fullscreen.vert"), header(kind) + (background ? "#define BACKGROUND\n" : "")
-                    + common + resource("shade.frag"));
-        }
-        return programs[kind];
+    private int shadeProgram(int kind, boolean background, boolean grid, boolean shadows) {
+        String defines = header(kind) + (background ? "#define BACKGROUND\n" : "") + (grid ? "#define GRID\n" : "")
+                + (shadows ? "#define SHADOWS\n" : "");
+        return shadePrograms.computeIfAbsent(defines,
+                d -> program(resource("fullscreen.vert"), d + common + resource("shade.frag")));
     }
 
     private int backgroundKind() {
@@ -371,13 +373,13 @@ public final class LiveRenderer implements AutoCloseable {
         glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
         glBindVertexArray(fullVao);
         int kind = backgroundKind();
-        p = shadeProgram(kind, true);
+        p = shadeProgram(kind, true, overlay.grid(), false);
         glUseProgram(p);
         cameraUniforms(p, view, x, glY, w, h, overlay);
         glStencilFunc(GL_EQUAL, 0, 0xFF);
         glDrawArrays(GL_TRIANGLES, 0, 3);
 
-        p = shadeProgram(kind, false);
+        p = shadeProgram(kind, false, false, scene.entityOffset.length <= SHADOW_ENTITY_LIMIT);
         glUseProgram(p);
         glStencilFunc(GL_EQUAL, 1, 0xFF);
         cameraUniforms(p, view, x, glY, w, h, overlay);
@@ -388,7 +390,6 @@ public final class LiveRenderer implements AutoCloseable {
         bind(p, "directory", 2, GL_TEXTURE_BUFFER, directoryTexture);
         glActiveTexture(GL_TEXTURE0);
         glUniform1i(glGetUniformLocation(p, "entityCount"), scene.entityOffset.length);
-        glUniform1i(glGetUniformLocation(p, "shadowEntities"), SHADOW_ENTITY_LIMIT);
         glUniform1i(glGetUniformLocation(p, "shadowLights"), SHADOW_LIGHTS);
         glUniform1i(glGetUniformLocation(p, "lightCount"), scene.lightCount);
         int n = scene.lightCount;
@@ -460,7 +461,6 @@ public final class LiveRenderer implements AutoCloseable {
         vec3(p, "cameraUp", v.up());
         glUniform1f(glGetUniformLocation(p, "halfHeight"), (float) v.scale());
         glUniform1f(glGetUniformLocation(p, "gamma"), (float) scene.gamma);
-        glUniform1i(glGetUniformLocation(p, "grid"), overlay.grid() ? 1 : 0);
         glUniform1f(glGetUniformLocation(p, "gridSpacing"), (float) overlay.gridSpacing());
         glUniform1i(glGetUniformLocation(p, "gridAxis"), overlay.gridAxis());
         Background bg = scene.background;
@@ -551,8 +551,7 @@ public final class LiveRenderer implements AutoCloseable {
         glDeleteVertexArrays(new int[] {cubeVao, csgVao, fullVao});
         if (entityProgram != 0) glDeleteProgram(entityProgram);
         if (primitiveProgram != 0) glDeleteProgram(primitiveProgram);
-        for (int p : shadePrograms) if (p != 0) glDeleteProgram(p);
-        for (int p : backgroundPrograms) if (p != 0) glDeleteProgram(p);
+        for (int p : shadePrograms.values()) glDeleteProgram(p);
     }
 
     private static void check(String what) {

@@ -13,7 +13,6 @@ uniform vec3 background1;
 uniform float panoramaAngle;
 uniform sampler2D panorama;
 uniform float gamma;
-uniform bool grid;
 uniform float gridSpacing;
 uniform int gridAxis;
 

@@ -14,16 +14,17 @@ void main() {
 #ifdef PRIMITIVES
     // Entities that are one primitive: no CSG walk at all (llvmpipe runs both sides of branches).
     float a, b;
-    int first = entity + 3 + int(T(entity).y);
-    if (!leafSpan(first, ro, rd, a, b)) discard;
+    // One primitive: the program is one step, so the primitive follows the header at once.
+    if (!leafSpan(entity + 4, ro, rd, a, b)) discard;
     t = a > 0.0 ? a : b;
     if (!(t > 0.0) || t == INF) discard;
     leaf = 0;
 #else
     if (walk(entity, ro, rd, 0.0, INF, false, t, leaf) == 0.0) discard;
 #endif
-    id = int(T(entity).z) + 1;
+    vec4 header = T(entity);
+    id = int(header.z) + 1;
     depth = t;
-    leafAddress = entity + 3 + int(T(entity).y) + leaf * LEAF_TEXELS;
+    leafAddress = entity + 3 + int(header.y) + leaf * LEAF_TEXELS;
     gl_FragDepth = t / (t + depthScale);
 }

@@ -40,17 +40,11 @@ bool leafSpan(int L, vec3 ro, vec3 rd, out float a, out float b) {
         return true;
     }
     vec3 lo = T(L + 4).xyz, hi = T(L + 5).xyz;
-    vec3 inv = 1.0 / d;
+    // A ray parallel to a slab: a tiny component instead of 0 keeps the slab test branch-free (a
+    // branch costs every pixel on llvmpipe) and gives ±huge distances of the right sign.
+    vec3 inv = 1.0 / mix(d, vec3(1e-30), equal(d, vec3(0.0)));
     vec3 t0 = (lo - o) * inv, t1 = (hi - o) * inv;
-    // A ray parallel to a slab is inside it for every t, or for none.
     vec3 tn = min(t0, t1), tf = max(t0, t1);
-    for (int i = 0; i < 3; i++) {
-        if (d[i] == 0.0) {
-            if (o[i] < lo[i] || o[i] > hi[i]) return false;
-            tn[i] = -INF;
-            tf[i] = INF;
-        }
-    }
     a = max(max(tn.x, tn.y), tn.z);
     b = min(min(tf.x, tf.y), tf.z);
     return a <= b;

@@ -7,7 +7,6 @@ uniform sampler2D depths;
 uniform isampler2D leaves;
 uniform isamplerBuffer directory;
 uniform int entityCount;
-uniform int shadowEntities;   // shadow rays test entities only when the scene has at most this many
 uniform int shadowLights;     // and only for the first this many lights
 uniform int lightCount;
 uniform vec4 lightA[16];      // kind, position or direction towards the light
@@ -45,7 +44,11 @@ void main() {
     primaryRay(ro, rd);
 #ifdef BACKGROUND
     vec4 c = encode(backgroundColour(rd));
-    colour = grid ? vec4(gridOver(c.rgb, ro), 1.0) : c;
+#ifdef GRID
+    colour = vec4(gridOver(c.rgb, ro), 1.0);
+#else
+    colour = c;
+#endif
 #else
     ivec2 p = ivec2(gl_FragCoord.xy);
     int id = texelFetch(ids, p, 0).x;
@@ -61,7 +64,6 @@ void main() {
     vec3 c = m2.rgb;
     // Shadow rays start a little off the surface, relative to the scale of the coordinates.
     float offset = 1e-4 * (t + length(x) + 1e-3);
-    bool shadows = entityCount <= shadowEntities;
     for (int l = 0; l < lightCount; l++) {
         vec3 cl = lightB[l].rgb;
         c += lightB[l].a * cl * base;
@@ -83,7 +85,11 @@ void main() {
         float specular = ks > 0.0 && rv > 0.0 ? ks * pow(rv, shininess) : 0.0;
         // As the ray tracer: a light that adds nothing here casts no shadow ray.
         if (diffuse == 0.0 && specular == 0.0) continue;
-        float s = shadows && l < shadowLights ? shadow(x + n * offset, w, dist) : 1.0;
+#ifdef SHADOWS
+        float s = l < shadowLights ? shadow(x + n * offset, w, dist) : 1.0;
+#else
+        float s = 1.0;
+#endif
         c += s * att * (diffuse * cl * base + specular * cl);
     }
     // Mirror and glass show what they see of the background only: the live view traces no
