@@ -14,7 +14,7 @@ for scene in csg-sculpture dice mirror-room; do
   ./crt render scenes/$scene.crt -o "$tmp/$scene-traced.png" --width 480 --height 270 -q
   montage "$tmp/$scene-live.png" "$tmp/$scene-traced.png" -tile 2x1 -geometry +4+0 "$out/$scene-live-vs-traced.png"
 done
-java -Dcrt.assets=assets -cp "$cp" dev.crt.live.LiveViewShots scenes/csg-sculpture.crt "$out/panel-quad.png" quad
-java -Dcrt.assets=assets -cp "$cp" dev.crt.live.LiveViewShots scenes/dice.crt "$out/panel-free.png" free
+java -cp "$cp" dev.crt.live.LiveViewShots scenes/csg-sculpture.crt "$out/panel-quad.png" quad
+java -cp "$cp" dev.crt.live.LiveViewShots scenes/dice.crt "$out/panel-free.png" free
 rm -rf "$tmp"
 echo "wrote $out/*.png"

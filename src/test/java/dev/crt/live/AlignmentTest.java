@@ -34,7 +34,6 @@ class AlignmentTest {
 
     @BeforeAll
     void open() {
-        System.setProperty("crt.assets", Path.of("assets").toAbsolutePath().toString());
         preview = GlAvailability.open();
     }
 
@@ -136,7 +135,10 @@ class AlignmentTest {
     }
 
     static Scene compile(Path file) throws IOException {
-        CompileResult r = CrtCompiler.compile(new Source(file.toString(), Files.readString(file), file), CompileOptions.DEFAULT);
+        // The shipped assets (the panorama of csg-sculpture) as a folder option, not the JVM-wide crt.assets property.
+        CompileOptions options = new CompileOptions(0, List.of(Path.of("assets")), CompileOptions.DEFAULT_LOOP_BUDGET,
+                CompileOptions.DEFAULT_TIME_BUDGET);
+        CompileResult r = CrtCompiler.compile(new Source(file.toString(), Files.readString(file), file), options);
         assertThat(r.hasErrors()).as("%s compiles: %s", file, r.diagnostics()).isFalse();
         return r.scene();
     }

@@ -22,7 +22,6 @@ class LiveViewPanelTest {
 
     @BeforeEach
     void open() throws Exception {
-        System.setProperty("crt.assets", Path.of("assets").toAbsolutePath().toString());
         GlAvailability.open().close();
         panel = LiveViewPanel.open();
         SwingUtilities.invokeAndWait(() -> panel.setSize(320, 240));

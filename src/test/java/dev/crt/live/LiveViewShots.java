@@ -1,12 +1,8 @@
 package dev.crt.live;
 
-import dev.crt.lang.CompileOptions;
-import dev.crt.lang.CrtCompiler;
-import dev.crt.lang.Source;
 import dev.crt.scene.Scene;
 import java.awt.Graphics2D;
 import java.awt.image.BufferedImage;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import javax.imageio.ImageIO;
 import javax.swing.JFrame;
@@ -26,8 +22,7 @@ public final class LiveViewShots {
         Path out = Path.of(args[1]);
         boolean quad = args.length > 2 && args[2].equals("quad");
         boolean window = args.length > 3 && args[3].equals("--window");
-        Scene scene = CrtCompiler.compile(new Source(scriptFile.toString(), Files.readString(scriptFile), scriptFile),
-                CompileOptions.DEFAULT).scene();
+        Scene scene = AlignmentTest.compile(scriptFile);
         LiveViewPanel panel = LiveViewPanel.open();
         JFrame[] frame = new JFrame[1];
         SwingUtilities.invokeAndWait(() -> {
