@@ -42,7 +42,8 @@ import javax.swing.SwingUtilities;
  * <p>Controls: left drag orbits (free view) or pans (orthographic views); right or middle drag
  * pans; Ctrl + left drag rolls; the wheel zooms. Keys: arrows orbit, Shift + arrows pan, + and −
  * zoom, Z and X roll, F frames the selection, A frames all, 1–5 show the free, scene camera, top,
- * front and side view, V switches between one and four viewports, Escape clears the selection.
+ * front and side view, V switches between one and four viewports, P ray-traces the free view at
+ * half resolution into it (until the camera or the scene changes), Escape clears the selection.
  */
 public final class LiveViewPanel extends JPanel implements AutoCloseable {
     private static final long serialVersionUID = 1L;
@@ -71,6 +72,17 @@ public final class LiveViewPanel extends JPanel implements AutoCloseable {
     // The last frame: written by the GL thread, shown by the event dispatch thread.
     private transient volatile Frame frame;
     private volatile long lastUpdateNanos;
+
+    /** The ray-traced preview of the free view, for the camera and scene it was made with. */
+    private record Traced(BufferedImage image, FreeCamera camera, Scene scene) {}
+
+    private transient volatile Traced traced;
+    private final transient ExecutorService tracer = Executors.newSingleThreadExecutor(r -> {
+        Thread t = new Thread(r, "crt-live-view-preview");
+        t.setDaemon(true);
+        return t;
+    });
+    private final transient java.util.concurrent.atomic.AtomicLong traceGeneration = new java.util.concurrent.atomic.AtomicLong();
 
     private transient Point pressed;
     private transient Viewport dragged;
@@ -430,6 +442,7 @@ public final class LiveViewPanel extends JPanel implements AutoCloseable {
                 case KeyEvent.VK_4 -> setLayout(false, Viewport.FRONT);
                 case KeyEvent.VK_5 -> setLayout(false, Viewport.SIDE);
                 case KeyEvent.VK_V -> setLayout(!quad, single);
+                case KeyEvent.VK_P -> rayTracePreview();
                 case KeyEvent.VK_ESCAPE -> pick(-1, -1);
                 default -> { }
             }
@@ -448,11 +461,18 @@ public final class LiveViewPanel extends JPanel implements AutoCloseable {
         Frame f = frame;
         if (f == null) return;
         g2.drawImage(f.image(), 0, 0, null);
+        Traced t = traced;
+        Rectangle freeRect = f.viewports().get(Viewport.FREE);
+        if (t != null && freeRect != null && t.camera().equals(free) && t.scene() == scene) {
+            g2.setRenderingHint(RenderingHints.KEY_INTERPOLATION, RenderingHints.VALUE_INTERPOLATION_BILINEAR);
+            g2.drawImage(t.image(), freeRect.x, freeRect.y, freeRect.width, freeRect.height, null);
+        }
         g2.setFont(getFont().deriveFont(Font.BOLD, 12f));
         for (Map.Entry<Viewport, Rectangle> e : f.viewports().entrySet()) {
             Rectangle r = e.getValue();
             g2.setColor(new Color(255, 255, 255, 200));
-            g2.drawString(e.getKey().label(), r.x + 8, r.y + 16);
+            boolean showsTrace = e.getKey() == Viewport.FREE && t != null && t.camera().equals(free) && t.scene() == scene;
+            g2.drawString(e.getKey().label() + (showsTrace ? " (ray-traced preview)" : ""), r.x + 8, r.y + 16);
             gizmo(g2, f.views().get(e.getKey()), r.x + 30, r.y + r.height - 30);
             if (f.viewports().size() > 1) {
                 g2.setColor(Color.GRAY);
@@ -476,9 +496,46 @@ public final class LiveViewPanel extends JPanel implements AutoCloseable {
         }
     }
 
-    /** Frees the GL context and stops the GL thread. */
+    /**
+     * "Preview": ray-traces the free camera's view at half the viewport's resolution on a thread of
+     * its own and shows it in the free viewport until the camera or the scene changes; a newer
+     * request cancels an older one. Returns when the render is under way.
+     */
+    public Future<BufferedImage> rayTracePreview() {
+        Scene s = scene;
+        FreeCamera c = free;
+        if (s == null) return java.util.concurrent.CompletableFuture.completedFuture(null);
+        Rectangle r = layout(getWidth(), getHeight()).getOrDefault(Viewport.FREE, new Rectangle(0, 0, getWidth(), getHeight()));
+        int w = Math.max(1, r.width / 2), h = Math.max(1, r.height / 2);
+        long generation = traceGeneration.incrementAndGet();
+        return tracer.submit(() -> {
+            dev.crt.scene.Settings o = s.settings();
+            Scene view = s.withSettings(new dev.crt.scene.Settings(o.title(), o.author(), o.date(), o.notes(), o.lights(),
+                    c.toCamera(o.camera()), o.background(), 1, 1, o.recursionDepth(), o.gamma(), w, h));
+            dev.crt.image.FrameBuffer fb = dev.crt.render.Renderer.prepare(view).render(0, new dev.crt.render.RenderMonitor() {
+                @Override
+                public boolean isCancelled() { return traceGeneration.get() != generation; }
+            });
+            BufferedImage image = new BufferedImage(w, h, BufferedImage.TYPE_INT_RGB);
+            double gamma = s.settings().gamma();
+            for (int y = 0; y < h; y++) {
+                for (int x = 0; x < w; x++) {
+                    image.setRGB(x, y, dev.crt.image.ImageFiles.toByte(fb.get(x, y, 0), gamma) << 16
+                            | dev.crt.image.ImageFiles.toByte(fb.get(x, y, 1), gamma) << 8
+                            | dev.crt.image.ImageFiles.toByte(fb.get(x, y, 2), gamma));
+                }
+            }
+            traced = new Traced(image, c, s);
+            SwingUtilities.invokeLater(this::repaint);
+            return image;
+        });
+    }
+
+    /** Frees the GL context and stops the GL and preview threads. */
     @Override
     public void close() {
+        traceGeneration.incrementAndGet();
+        tracer.shutdownNow();
         Future<?> f = glThread.submit(() -> {
             renderer.close();
             context.close();

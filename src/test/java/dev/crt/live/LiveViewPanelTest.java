@@ -102,6 +102,20 @@ class LiveViewPanelTest {
     }
 
     @Test
+    void thePreviewRayTracesTheFreeViewAtHalfSize() throws Exception {
+        Scene scene = AlignmentTest.compile(Path.of("scenes/dice.crt"));
+        onEdt(() -> panel.setScene(scene));
+        BufferedImage traced = panel.rayTracePreview().get();
+        assertThat(traced.getWidth()).isEqualTo(160);
+        assertThat(traced.getHeight()).isEqualTo(120);
+        // The free camera starts at the scene camera: the preview is the ray tracer's picture at that size.
+        Scene small = scene.withSettings(scene.settings().withSize(160, 120).withSampling(1, 1));
+        dev.crt.image.FrameBuffer expected = dev.crt.render.Renderer.prepare(small).render(1, dev.crt.render.RenderMonitor.NONE);
+        int rgb = traced.getRGB(80, 60) & 0xFFFFFF;
+        assertThat(rgb >> 16).isEqualTo(dev.crt.image.ImageFiles.toByte(expected.get(80, 60, 0), scene.settings().gamma()));
+    }
+
+    @Test
     void aNewCompileUploadsOnlyWhatChanged() throws Exception {
         Scene scene = AlignmentTest.compile(Path.of("scenes/box-field.crt"));
         onEdt(() -> panel.setScene(scene));
