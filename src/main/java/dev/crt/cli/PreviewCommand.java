@@ -89,7 +89,7 @@ final class PreviewCommand implements Callable<Integer> {
                 case DEPTH -> PassFiles.writeDepth(preview.depth(), w, h, target);
                 default -> {
                     try {
-                        ImageFiles.write(preview.image(Preview.Pass.COLOR, s.gamma()), target, s.gamma(),
+                        ImageFiles.write(preview.colourImage(s.gamma()), target, s.gamma(),
                                 FrameJob.textChunks(s));
                     } catch (IOException e) {
                         throw new CliFailure(ExitCode.FILE_ERROR, ScriptCompilation.plain(e));

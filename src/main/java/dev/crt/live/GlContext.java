@@ -55,6 +55,7 @@ public final class GlContext implements AutoCloseable {
             throw new GlUnavailableException("OpenGL is not available: EGL has no surfaceless display"
                     + " (is Mesa's libgl1-mesa-dri installed?)");
         }
+        long context;
         try (MemoryStack stack = MemoryStack.stackPush()) {
             IntBuffer major = stack.mallocInt(1), minor = stack.mallocInt(1);
             if (!EGL10.eglInitialize(display, major, minor)) {
@@ -80,7 +81,7 @@ public final class GlContext implements AutoCloseable {
                     EGL15.EGL_CONTEXT_MINOR_VERSION, 3,
                     EGL15.EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL15.EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
                     EGL10.EGL_NONE);
-            long context = EGL10.eglCreateContext(display, configs.get(0), EGL10.EGL_NO_CONTEXT, contextAttributes);
+            context = EGL10.eglCreateContext(display, configs.get(0), EGL10.EGL_NO_CONTEXT, contextAttributes);
             if (context == EGL10.EGL_NO_CONTEXT) {
                 int error = EGL10.eglGetError();
                 EGL10.eglTerminate(display);
@@ -97,7 +98,7 @@ public final class GlContext implements AutoCloseable {
         loadGl();
         GL.createCapabilities();
         String description = GL11.glGetString(GL11.GL_VERSION) + " on " + GL11.glGetString(GL11.GL_RENDERER);
-        return new GlContext(display, contextFrom(), description);
+        return new GlContext(display, context, description);
     }
 
     private static synchronized void loadGl() {
@@ -107,10 +108,6 @@ public final class GlContext implements AutoCloseable {
     }
 
     private static boolean glLoaded;
-
-    private static long contextFrom() {
-        return EGL14.eglGetCurrentContext();
-    }
 
     /** The GL version and renderer, e.g. "4.5 (Core Profile) Mesa 22.3.6 on llvmpipe (LLVM 15.0.6, 256 bits)". */
     public String description() { return description; }

@@ -1,7 +1,6 @@
 package dev.crt.live;
 
 import dev.crt.image.FrameBuffer;
-import dev.crt.image.IdColors;
 import dev.crt.scene.Scene;
 
 /**
@@ -9,9 +8,6 @@ import dev.crt.scene.Scene;
  * writes and what the alignment tests compare with the ray tracer.
  */
 public final class Preview implements AutoCloseable {
-    /** The passes a preview can write. */
-    public enum Pass { COLOR, ID, DEPTH }
-
     private final GlContext context;
     private final LiveRenderer renderer;
 
@@ -56,33 +52,15 @@ public final class Preview implements AutoCloseable {
     /** Distance along the unit ray per pixel, +∞ for background. */
     public float[] depth() { return renderer.readDepth(); }
 
-    /** The last drawn frame as an image of the given pass, ready for the image writers (PFM depth in the red channel of a grey image). */
-    public FrameBuffer image(Pass pass, double gamma) {
+    /** The last drawn picture as a linear image for the image writers, which encode it back to the bytes drawn. */
+    public FrameBuffer colourImage(double gamma) {
         int w = renderer.width(), h = renderer.height();
-        FrameBuffer image;
-        switch (pass) {
-            case ID -> image = IdColors.image(renderer.readIds(), w, h);
-            case DEPTH -> {
-                float[] d = renderer.readDepth();
-                image = new FrameBuffer(w, h);
-                for (int y = 0; y < h; y++) {
-                    for (int x = 0; x < w; x++) {
-                        double v = d[y * w + x];
-                        image.set(x, y, v, v, v);
-                    }
-                }
-            }
-            default -> {
-                int[] c = renderer.readColour();
-                image = new FrameBuffer(w, h);
-                // The shader already applied the gamma: undo it so the writers' encoding gives back these bytes.
-                for (int y = 0; y < h; y++) {
-                    for (int x = 0; x < w; x++) {
-                        int p = c[y * w + x];
-                        image.set(x, y, linear((p >> 16) & 255, gamma), linear((p >> 8) & 255, gamma),
-                                linear(p & 255, gamma));
-                    }
-                }
+        int[] c = renderer.readColour();
+        FrameBuffer image = new FrameBuffer(w, h);
+        for (int y = 0; y < h; y++) {
+            for (int x = 0; x < w; x++) {
+                int p = c[y * w + x];
+                image.set(x, y, linear((p >> 16) & 255, gamma), linear((p >> 8) & 255, gamma), linear(p & 255, gamma));
             }
         }
         return image;
