@@ -511,7 +511,8 @@ public final class LiveViewPanel extends JPanel implements AutoCloseable {
         return tracer.submit(() -> {
             dev.crt.scene.Settings o = s.settings();
             Scene view = s.withSettings(new dev.crt.scene.Settings(o.title(), o.author(), o.date(), o.notes(), o.lights(),
-                    c.toCamera(o.camera()), o.background(), 1, 1, o.recursionDepth(), o.gamma(), w, h));
+                    c.toCamera(o.camera()), o.background(), 1, 1, o.recursionDepth(), o.gamma(), w, h)
+                    .withShading(o.shading()));
             dev.crt.image.FrameBuffer fb = dev.crt.render.Renderer.prepare(view).render(0, new dev.crt.render.RenderMonitor() {
                 @Override
                 public boolean isCancelled() { return traceGeneration.get() != generation; }
