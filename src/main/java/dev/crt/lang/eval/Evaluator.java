@@ -72,9 +72,10 @@ public final class Evaluator extends CRTBaseVisitor<Value> {
     private boolean sawScene;
     private int errors;
 
-    public Evaluator(TextPositions positions, CompileOptions options, Path scriptFolder) {
+    /** {@code startNanos} (System.nanoTime) is when the compile began: its time budget counts from then. */
+    public Evaluator(TextPositions positions, CompileOptions options, Path scriptFolder, long startNanos) {
         this.positions = positions;
-        this.budget = new Budget(options.loopBudget(), options.timeBudget());
+        this.budget = new Budget(options.loopBudget(), options.timeBudget(), startNanos);
         this.objects = new ObjectBuilder(this, new Assets(scriptFolder, options.assetDirs()));
         this.settings = new SettingsState();
         // A whole time (every frame number of crt animate) is an integer, so `xs[t]` and `t % 2` work.
