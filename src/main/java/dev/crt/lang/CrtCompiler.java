@@ -47,7 +47,8 @@ public final class CrtCompiler {
         String text = source.text() == null ? "" : source.text();
         TextPositions positions = new TextPositions(name, text);
         if (!source.isText()) {
-            return new CompileResult(null, List.of(error(source.decodingProblem(), positions.span(0, 0))));
+            int at = Math.min(Math.max(source.problemOffset(), 0), text.length());
+            return new CompileResult(null, List.of(error(source.decodingProblem(), positions.span(at, at + 1))));
         }
         try {
             long started = System.nanoTime();

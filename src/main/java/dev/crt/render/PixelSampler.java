@@ -1,5 +1,7 @@
 package dev.crt.render;
 
+import java.util.function.BooleanSupplier;
+
 /**
  * The colour of one pixel: the mean over its n×n sub-pixel grid and, with a lens, over m lens
  * samples per sub-pixel, drawn from a generator seeded by the pixel's coordinates.
@@ -14,8 +16,13 @@ final class PixelSampler {
     private final double[] direction = new double[3];
     private final double[] lens = new double[2];
 
-    PixelSampler(Tracer tracer, CameraRays camera, int supersampling, int dofSamples, int recursionDepth) {
+    private final BooleanSupplier stop;
+
+    /** {@code stop} is asked between rows of sub-pixels, so that a cancel is prompt however many samples a pixel takes. */
+    PixelSampler(Tracer tracer, CameraRays camera, int supersampling, int dofSamples, int recursionDepth,
+            BooleanSupplier stop) {
         this.tracer = tracer;
+        this.stop = stop;
         this.camera = camera;
         grid = supersampling;
         lensSamples = camera.hasLens() ? dofSamples : 1;
@@ -23,7 +30,7 @@ final class PixelSampler {
         weight = 1.0 / ((double) grid * grid * lensSamples);
     }
 
-    /** Writes the linear colour of pixel (i, j) into {@code out[0..2]}. */
+    /** Writes the linear colour of pixel (i, j) into {@code out[0..2]}; a stopped pixel's colour is partial and unused. */
     void pixel(int i, int j, double[] out) {
         Tracer t = tracer;
         t.accR = 0;
@@ -31,6 +38,7 @@ final class PixelSampler {
         t.accB = 0;
         if (camera.hasLens()) random.seed(i, j);
         for (int b = 0; b < grid; b++) {
+            if (b > 0 && stop.getAsBoolean()) break;
             double sy = (b + 0.5) / grid;
             for (int a = 0; a < grid; a++) {
                 double sx = (a + 0.5) / grid;

@@ -68,7 +68,7 @@ public final class Renderer {
             Tracer tracer = new Tracer(geometry, lights, background);
             tracers.add(tracer);
             PixelSampler sampler = new PixelSampler(tracer, camera, settings.supersampling(), settings.dofSamples(),
-                    settings.recursionDepth());
+                    settings.recursionDepth(), () -> cancelled.get() || monitor.isCancelled());
             Runnable work = () -> {
                 double[] rgb = new double[3];
                 int tile;
@@ -76,12 +76,14 @@ public final class Renderer {
                     tile = (int) ((long) tile * stride % tiles);
                     int x0 = (tile % tilesX) * TILE, y0 = (tile / tilesX) * TILE;
                     int x1 = Math.min(x0 + TILE, width), y1 = Math.min(y0 + TILE, height);
+                    // Checked at every pixel (and inside it, by the sampler): a pixel of thousands of
+                    // samples is the longest a cancel waits, not a row of a tile.
                     for (int y = y0; y < y1; y++) {
-                        if (cancelled.get() || monitor.isCancelled()) {
-                            cancelled.set(true);
-                            return;
-                        }
                         for (int x = x0; x < x1; x++) {
+                            if (cancelled.get() || monitor.isCancelled()) {
+                                cancelled.set(true);
+                                return;
+                            }
                             sampler.pixel(x, y, rgb);
                             image.set(x, y, rgb[0], rgb[1], rgb[2]);
                         }

@@ -30,9 +30,11 @@ class SyntaxErrorsTest {
     void severalErrorsInOneFileAreAllReported() {
         String script = "a = (1 + 2\nb = Sphere { radius 1 }\nc = 3 +\nScene { a b }\nd = ]\n";
         List<Diagnostic> es = errors(script);
-        assertThat(es).extracting(d -> d.span().line()).containsExactly(2, 2, 4, 5);
+        assertThat(es).extracting(d -> d.span().line()).containsExactly(2, 2, 3, 5);
         at(es.get(0), 2, 1, "expected ')' to close '(' opened at 1:5 before 'b'");
         at(es.get(1), 2, 21, "expected '->' before '1'");
+        // `c = 3 +` was cut at the end of its line: that is where the mistake is, not at 'Scene'.
+        at(es.get(2), 3, 7, "expected an expression after '+' at the end of line 3");
         assertThat(es).allSatisfy(d -> assertThat(d.message()).doesNotContain("{").doesNotContain("<EOF>"));
     }
 
