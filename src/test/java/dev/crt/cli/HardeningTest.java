@@ -138,4 +138,17 @@ class HardeningTest {
     void framePatternWidthsPadWithZeros() {
         assertThat(FramePattern.parse("f%5d.png").path(42)).isEqualTo(Path.of("f00042.png"));
     }
+
+    @Test
+    void docsShowWhatTheCommandsPrint() throws IOException {
+        String docs = Files.readString(Path.of("docs/cli.md"));
+        CliRun check = CliRun.of("check", "--assets", "assets", "scenes/csg-sculpture.crt");
+        assertThat(check.exitCode()).isEqualTo(0);
+        assertThat(docs).contains(check.out().strip());
+        Path bad = Files.writeString(dir.resolve("bad.crt"), "Settings { camera -> Camera { position -> vec3(0, 0, -5)"
+                + " pointing -> vec3(0, 0, 0) } }\nScene {\n    Sphere { radus -> 2 }\n}\n");
+        assertThat(docs).contains(bad.getFileName() + ": 1 error, 0 warnings")
+                .contains(CliRun.of("check", bad.toString()).err().replace(dir + "/", "").strip());
+        assertThat(docs).contains(CliRun.of("render", bad.toString(), "--bogus").err().strip());
+    }
 }
