@@ -60,7 +60,7 @@ public final class Main implements Runnable {
         cl.setOut(out);
         cl.setErr(err);
         // As git and cargo do: the error, then where help is, not 40 lines of help burying the error.
-        cl.setParameterExceptionHandler((ex, params) -> usageError(ex.getCommandLine(), ex.getMessage()));
+        cl.setParameterExceptionHandler((ex, params) -> usageError(ex.getCommandLine(), describe(ex)));
         cl.setExecutionExceptionHandler((ex, line, parsed) -> {
             if (ex instanceof CliFailure f) {
                 if (f.exitCode() == ExitCode.USAGE) return usageError(line, f.getMessage());
@@ -76,6 +76,15 @@ public final class Main implements Runnable {
         } catch (OutOfMemoryError e) {
             return outOfMemory(err);
         }
+    }
+
+    /** picocli's message, except for a mistyped command, which is named as one. */
+    private static String describe(CommandLine.ParameterException ex) {
+        if (ex instanceof CommandLine.UnmatchedArgumentException unmatched && ex.getCommandLine().getParent() == null
+                && !unmatched.getUnmatched().isEmpty() && !unmatched.getUnmatched().get(0).startsWith("-")) {
+            return "unknown command '" + unmatched.getUnmatched().get(0) + "' (the commands are check, render, animate and help)";
+        }
+        return ex.getMessage();
     }
 
     /** Prints "crt: error: …" and a pointer to the command's --help; the exit code of bad usage. */
