@@ -84,7 +84,9 @@ public final class Main implements Runnable {
                 && !unmatched.getUnmatched().isEmpty() && !unmatched.getUnmatched().get(0).startsWith("-")) {
             return "unknown command '" + unmatched.getUnmatched().get(0) + "' (the commands are check, render, animate and help)";
         }
-        return ex.getMessage();
+        // Some of picocli's messages start with their own "Error: ", which would follow ours.
+        String message = ex.getMessage();
+        return message.startsWith("Error: ") ? message.substring("Error: ".length()) : message;
     }
 
     /** Prints "crt: error: …" and a pointer to the command's --help; the exit code of bad usage. */

@@ -40,7 +40,7 @@ class HardeningTest {
         usageError(CliRun.of("render", s, "-o", dir.resolve("x.jpg").toString()), "crt render",
                 "cannot write " + dir.resolve("x.jpg") + ": unsupported image type '.jpg' (use .png, .ppm or .pfm)");
         usageError(CliRun.of("animate", s, "--frames", "0..1", "-o", dir + "/f%d.png", "--resume", "--force"),
-                "crt animate", "Error: --resume, --force are mutually exclusive (specify only one)");
+                "crt animate", "--resume, --force are mutually exclusive (specify only one)");
         usageError(CliRun.of("check", "--assets", dir.resolve("none").toString(), s), "crt check",
                 "--assets " + dir.resolve("none") + ": no such folder");
         usageError(CliRun.of(), "crt", "a command is needed: check, render or animate");
