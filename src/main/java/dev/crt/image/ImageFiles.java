@@ -105,16 +105,13 @@ public final class ImageFiles {
         return (int) Math.round(v * 255);
     }
 
-    /** The whole image as gamma-encoded bytes, r, g, b per pixel, rows top to bottom. */
-    static byte[] encode8(FrameBuffer image, double gamma) {
+    /**
+     * Row {@code y} of the image as gamma-encoded bytes, r, g, b per pixel, into {@code row}: the
+     * writers encode row by row, so writing needs no second full-size copy of the image.
+     */
+    static void encodeRow(FrameBuffer image, int y, GammaEncoder encoder, byte[] row) {
         float[] data = image.data();
-        byte[] bytes = new byte[data.length];
-        if (gamma == 1) {
-            for (int i = 0; i < data.length; i++) bytes[i] = (byte) toByte(data[i], 1);
-        } else {
-            GammaEncoder encoder = new GammaEncoder(gamma);
-            for (int i = 0; i < data.length; i++) bytes[i] = (byte) encoder.encode(data[i]);
-        }
-        return bytes;
+        int start = y * image.width() * 3;
+        for (int i = 0; i < row.length; i++) row[i] = (byte) encoder.encode(data[start + i]);
     }
 }
