@@ -252,12 +252,12 @@ final class CsgSolids {
         final int[] stamp;
         int walk;
         final int[] startInside;
-        final double[] eventT;
-        final int[] eventLeaf;
-        final int[] eventFace;
-        final boolean[] eventEntry;
+        double[] eventT;
+        int[] eventLeaf;
+        int[] eventFace;
+        boolean[] eventEntry;
         /** The events by distance (indices into the event arrays), and room for sorting them. */
-        final int[] order, merge;
+        int[] order, merge;
         final int[] stack;
         int starts;
 
@@ -276,6 +276,21 @@ final class CsgSolids {
             order = new int[2 * n];
             merge = new int[2 * n];
             stack = new int[Math.max(1, 2 * csg.maxDepth)];
+        }
+
+        /**
+         * Makes room for {@code events} events: two per leaf suffice for convex leaves, a torus
+         * or a mesh may cross more often; the arrays grow once and are kept.
+         */
+        void room(int events) {
+            if (events <= eventT.length) return;
+            int n = Math.max(events, 2 * eventT.length);
+            eventT = Arrays.copyOf(eventT, n);
+            eventLeaf = Arrays.copyOf(eventLeaf, n);
+            eventFace = Arrays.copyOf(eventFace, n);
+            eventEntry = Arrays.copyOf(eventEntry, n);
+            order = new int[n];
+            merge = new int[n];
         }
 
         /** Starts a walk: every node reads as empty (all leaves outside) until touched. */
@@ -332,9 +347,12 @@ final class CsgSolids {
     private int gatherLeaf(int tree, int k, Ray ray, Shapes shapes, LineSpan span, Scratch sc, int events) {
         sc.leafInside[k] = false;
         if (!shapes.span(leafShape[leafStart[tree] + k], ray, span)) return events;
-        if (span.tIn == Double.NEGATIVE_INFINITY) sc.startInside[sc.starts++] = k;
-        else events = add(sc, events, span.tIn, k, span.faceIn, true);
-        if (span.tOut != Double.POSITIVE_INFINITY) events = add(sc, events, span.tOut, k, span.faceOut, false);
+        sc.room(events + 2 * span.count);
+        for (int i = 0; i < span.count; i++) {
+            if (span.tIn[i] == Double.NEGATIVE_INFINITY) sc.startInside[sc.starts++] = k;
+            else events = add(sc, events, span.tIn[i], k, span.faceIn[i], true);
+            if (span.tOut[i] != Double.POSITIVE_INFINITY) events = add(sc, events, span.tOut[i], k, span.faceOut[i], false);
+        }
         return events;
     }
 

@@ -277,23 +277,26 @@ final class Tracer {
     private boolean hitItem(int item, double tMax) {
         if (item < 0) return csg.closestHit(-item - 1, ray, tMax, shapes, geometry.materials, span, csgScratch, hit);
         if (!shapes.span(item, ray, span)) return false;
-        double t;
-        int face;
-        if (span.tIn > 0) {
-            t = span.tIn;
-            face = span.faceIn;
-        } else if (span.tOut > 0) {
-            t = span.tOut;
-            face = span.faceOut;
-        } else {
-            return false;
+        for (int i = 0; i < span.count; i++) {
+            double t;
+            int face;
+            if (span.tIn[i] > 0) {
+                t = span.tIn[i];
+                face = span.faceIn[i];
+            } else if (span.tOut[i] > 0) {
+                t = span.tOut[i];
+                face = span.faceOut[i];
+            } else {
+                continue;
+            }
+            if (!(t < tMax)) return false;
+            hit.t = t;
+            hit.shape = item;
+            hit.face = face;
+            hit.flip = false;
+            return true;
         }
-        if (!(t < tMax)) return false;
-        hit.t = t;
-        hit.shape = item;
-        hit.face = face;
-        hit.flip = false;
-        return true;
+        return false;
     }
 
     /**
@@ -355,10 +358,15 @@ final class Tracer {
             return csg.transmittance(-item - 1, ray, tMax, shapes, geometry.materials, span, csgScratch);
         }
         if (!shapes.span(item, ray, span)) return 1;
-        boolean in = span.tIn > 0 && span.tIn < tMax;
-        boolean out = span.tOut > 0 && span.tOut < tMax;
-        if (!in && !out) return 1;
+        int crossings = 0;
+        for (int i = 0; i < span.count; i++) {
+            if (span.tIn[i] > 0 && span.tIn[i] < tMax) crossings++;
+            if (span.tOut[i] > 0 && span.tOut[i] < tMax) crossings++;
+        }
+        if (crossings == 0) return 1;
         double kt = materials[shapes.material[item] * Materials.STRIDE + Materials.TRANSPARENCY];
-        return in && out ? kt * kt : kt;
+        double product = kt;
+        for (int k = 1; k < crossings; k++) product *= kt;
+        return product;
     }
 }

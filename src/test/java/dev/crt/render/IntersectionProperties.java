@@ -67,10 +67,10 @@ class IntersectionProperties {
         if (!hit || dist > radius * (1 - 1e-6)) return;
         double mid = -oc.dot(d), half = Math.sqrt((radius - dist) * (radius + dist));
         double tol = 1e-9 * (Math.abs(mid) + radius);
-        assertThat(Math.abs(span.tIn - (mid - half))).isLessThanOrEqualTo(tol);
-        assertThat(Math.abs(span.tOut - (mid + half))).isLessThanOrEqualTo(tol);
+        assertThat(Math.abs(span.tIn[0] - (mid - half))).isLessThanOrEqualTo(tol);
+        assertThat(Math.abs(span.tOut[0] - (mid + half))).isLessThanOrEqualTo(tol);
         SurfacePoint p = new SurfacePoint();
-        shapes.surface(s, span.faceIn, span.tIn, ray, p);
+        shapes.surface(s, span.faceIn[0], span.tIn[0], ray, p);
         Vec3 n = new Vec3(p.nx, p.ny, p.nz);
         assertThat(Math.abs(n.length() - 1)).isLessThan(1e-12);
         Vec3 expectedN = o.plus(d.times(mid - half)).minus(c).normalize();
