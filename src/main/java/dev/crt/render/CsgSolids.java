@@ -258,7 +258,7 @@ final class CsgSolids {
         boolean[] eventEntry;
         /** The events by distance (indices into the event arrays), and room for sorting them. */
         int[] order, merge;
-        final int[] stack;
+        final BvhWalker walker;
         int starts;
 
         Scratch(CsgSolids csg) {
@@ -275,7 +275,7 @@ final class CsgSolids {
             eventEntry = new boolean[2 * n];
             order = new int[2 * n];
             merge = new int[2 * n];
-            stack = new int[Math.max(1, 2 * csg.maxDepth)];
+            walker = new BvhWalker(2 * csg.maxDepth);
         }
 
         /**
@@ -315,32 +315,15 @@ final class CsgSolids {
             events = gatherLeaf(tree, testLeaf[i], ray, shapes, span, sc, events);
         }
         Bvh h = bvh[tree];
-        if (h == null || !ray.enters(h.root, 0, tMin, tMax)) return events;
-        int[] stack = sc.stack;
-        int top = 0;
-        int node = 0;
+        BvhWalker walk = sc.walker;
+        if (h == null || !walk.start(h, ray, tMin, tMax)) return events;
         int base = bvhStart[tree];
-        while (true) {
-            if (Bvh.isLeaf(node)) {
-                for (int p = Bvh.leafFirst(node), end = p + Bvh.leafCount(node); p < end; p++) {
-                    events = gatherLeaf(tree, bvhLeaf[base + p], ray, shapes, span, sc, events);
-                }
-            } else {
-                int left = h.children[2 * node], right = h.children[2 * node + 1];
-                boolean l = ray.enters(h.box, 12 * node, tMin, tMax), r = ray.enters(h.box, 12 * node + 6, tMin, tMax);
-                if (l) {
-                    if (r) stack[top++] = right;
-                    node = left;
-                    continue;
-                }
-                if (r) {
-                    node = right;
-                    continue;
-                }
+        for (int leaf = walk.nextAny(tMax); leaf != BvhWalker.END; leaf = walk.nextAny(tMax)) {
+            for (int p = Bvh.leafFirst(leaf), end = p + Bvh.leafCount(leaf); p < end; p++) {
+                events = gatherLeaf(tree, bvhLeaf[base + p], ray, shapes, span, sc, events);
             }
-            if (top == 0) return events;
-            node = stack[--top];
         }
+        return events;
     }
 
     /** The events of tree-local leaf {@code k}, inserted among the {@code events} already sorted. */
