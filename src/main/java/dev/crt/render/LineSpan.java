@@ -8,9 +8,13 @@ import java.util.Arrays;
  * with the face crossed at each end. A convex solid gives one interval, a torus up to two, a mesh
  * as many as it has pairs of crossings. Per-thread scratch: it grows when a shape needs more room
  * and is reused for every query after that.
+ *
+ * <p>An open surface (an uncapped tube) has no inside: {@link #surface} is then true and each
+ * interval is one crossing, tIn = tOut.
  */
 final class LineSpan {
     int count;
+    boolean surface;
     double[] tIn = new double[2], tOut = new double[2];
     int[] faceIn = new int[2], faceOut = new int[2];
 
@@ -21,6 +25,7 @@ final class LineSpan {
         faceIn[0] = fIn;
         faceOut[0] = fOut;
         count = 1;
+        surface = false;
     }
 
     /** Appends an interval after the ones already there. */

@@ -4,6 +4,8 @@ import dev.crt.geom.Aabb;
 import dev.crt.geom.Transform;
 import dev.crt.geom.Vec3;
 import dev.crt.scene.Box;
+import dev.crt.scene.Cone;
+import dev.crt.scene.Cylinder;
 import dev.crt.scene.Plane;
 import dev.crt.scene.Primitive;
 import dev.crt.scene.Sphere;
@@ -28,8 +30,10 @@ final class Shapes {
     static final int MAPPED_BOX = 4;
     /** A shape with nothing to hit (a sphere of radius 0). */
     static final int EMPTY = 5;
+    /** Cylinders, cones and frusta, capped or open. */
+    static final int CONE = 6;
     /** The number of kind tags: tags are 0 … KINDS − 1. */
-    static final int KINDS = 6;
+    static final int KINDS = 7;
 
     private int count;
     int[] kind = new int[16];
@@ -50,6 +54,8 @@ final class Shapes {
         if (p instanceof Sphere sp) SphereShape.add(this, s, sp, toWorld);
         else if (p instanceof Box b) BoxShape.add(this, s, b, toWorld);
         else if (p instanceof Plane pl) PlaneShape.add(this, s, pl, toWorld);
+        else if (p instanceof Cylinder c) ConeShape.add(this, s, c, toWorld);
+        else if (p instanceof Cone c) ConeShape.add(this, s, c, toWorld);
         else throw new IllegalArgumentException("no shape class for " + p.getClass().getSimpleName());
         return s;
     }
@@ -115,6 +121,7 @@ final class Shapes {
             case PLANE -> PlaneShape.bounds();
             case MAPPED_SPHERE -> SphereShape.mappedBounds(a, o);
             case MAPPED_BOX -> BoxShape.mappedBounds(a, o);
+            case CONE -> ConeShape.bounds(a, o);
             case EMPTY -> Aabb.EMPTY;
             default -> throw unknown(s);
         };
@@ -139,6 +146,8 @@ final class Shapes {
                 return SphereShape.mappedSpan(a, o, ray, out);
             case MAPPED_BOX:
                 return BoxShape.mappedSpan(a, o, ray, out);
+            case CONE:
+                return ConeShape.span(a, o, ray, out);
             case EMPTY:
                 return false;
             default:
@@ -161,6 +170,7 @@ final class Shapes {
             case PLANE -> PlaneShape.surface(a, o, px, py, pz, out);
             case MAPPED_SPHERE -> SphereShape.mappedSurface(a, o, px, py, pz, out);
             case MAPPED_BOX -> BoxShape.mappedSurface(a, o, face, px, py, pz, out);
+            case CONE -> ConeShape.surface(a, o, face, px, py, pz, out);
             default -> throw unknown(s);
         }
     }
@@ -179,6 +189,7 @@ final class Shapes {
             case PLANE -> PlaneShape.frame(a, o, out);
             case MAPPED_SPHERE -> SphereShape.mappedFrame(a, o, out);
             case MAPPED_BOX -> BoxShape.mappedFrame(a, o, face, out);
+            case CONE -> ConeShape.frame(a, o, face, out);
             default -> throw unknown(s);
         }
     }

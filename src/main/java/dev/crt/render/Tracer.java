@@ -307,7 +307,7 @@ final class Tracer {
         int crossings = 0;
         for (int i = 0; i < span.count; i++) {
             if (span.tIn[i] > 0 && span.tIn[i] < tMax) crossings++;
-            if (span.tOut[i] > 0 && span.tOut[i] < tMax) crossings++;
+            if (span.tOut[i] > 0 && span.tOut[i] < tMax && !span.surface) crossings++;
         }
         if (crossings == 0) return 1;
         double kt = materials[shapes.material[item] * Materials.STRIDE + Materials.TRANSPARENCY];

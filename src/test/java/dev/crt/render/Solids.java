@@ -3,6 +3,8 @@ package dev.crt.render;
 import dev.crt.geom.Transform;
 import dev.crt.geom.Vec3;
 import dev.crt.scene.Box;
+import dev.crt.scene.Cone;
+import dev.crt.scene.Cylinder;
 import dev.crt.scene.Csg;
 import dev.crt.scene.Entity;
 import dev.crt.scene.Plane;
@@ -23,6 +25,8 @@ final class Solids {
                     && q.z() >= b.min().z() && q.z() <= b.max().z();
         }
         if (e instanceof Plane pl) return pl.normal().dot(q.minus(pl.position())) <= 0;
+        if (e instanceof Cylinder c) return insideCone(c.from(), c.to(), c.radius(), c.radius(), q);
+        if (e instanceof Cone c) return insideCone(c.from(), c.to(), c.radius(), c.radius2(), q);
         Csg c = (Csg) e;
         boolean a = inside(c.left(), q), b = inside(c.right(), q);
         return switch (c.operation()) {
@@ -30,6 +34,15 @@ final class Solids {
             case INTERSECTION -> a && b;
             case DIFFERENCE -> a && !b;
         };
+    }
+
+    /** Within the radius interpolated at the point's projection on the segment from a to b, by distance to the line. */
+    private static boolean insideCone(Vec3 a, Vec3 b, double r0, double r1, Vec3 q) {
+        Vec3 axis = b.minus(a);
+        double s = q.minus(a).dot(axis) / axis.dot(axis);
+        if (s < 0 || s > 1) return false;
+        double distance = q.minus(a).cross(axis).length() / axis.length();
+        return distance <= r0 + (r1 - r0) * s;
     }
 
     /** A random affine transform: scale (non-uniform when asked), rotation, translation. */
