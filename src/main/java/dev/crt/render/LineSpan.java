@@ -17,6 +17,8 @@ final class LineSpan {
     boolean surface;
     double[] tIn = new double[2], tOut = new double[2];
     int[] faceIn = new int[2], faceOut = new int[2];
+    /** Room for a shape's polynomial roots while it builds the intervals. */
+    final double[] roots = new double[8];
 
     /** Sets the one interval of a convex solid. */
     void one(double in, double out, int fIn, int fOut) {

@@ -9,6 +9,7 @@ import dev.crt.scene.Cylinder;
 import dev.crt.scene.Plane;
 import dev.crt.scene.Primitive;
 import dev.crt.scene.Sphere;
+import dev.crt.scene.Torus;
 import java.util.Arrays;
 
 /**
@@ -32,8 +33,9 @@ final class Shapes {
     static final int EMPTY = 5;
     /** Cylinders, cones and frusta, capped or open. */
     static final int CONE = 6;
+    static final int TORUS = 7;
     /** The number of kind tags: tags are 0 … KINDS − 1. */
-    static final int KINDS = 7;
+    static final int KINDS = 8;
 
     private int count;
     int[] kind = new int[16];
@@ -56,6 +58,7 @@ final class Shapes {
         else if (p instanceof Plane pl) PlaneShape.add(this, s, pl, toWorld);
         else if (p instanceof Cylinder c) ConeShape.add(this, s, c, toWorld);
         else if (p instanceof Cone c) ConeShape.add(this, s, c, toWorld);
+        else if (p instanceof Torus t) TorusShape.add(this, s, t, toWorld);
         else throw new IllegalArgumentException("no shape class for " + p.getClass().getSimpleName());
         return s;
     }
@@ -122,6 +125,7 @@ final class Shapes {
             case MAPPED_SPHERE -> SphereShape.mappedBounds(a, o);
             case MAPPED_BOX -> BoxShape.mappedBounds(a, o);
             case CONE -> ConeShape.bounds(a, o);
+            case TORUS -> TorusShape.bounds(a, o);
             case EMPTY -> Aabb.EMPTY;
             default -> throw unknown(s);
         };
@@ -148,6 +152,8 @@ final class Shapes {
                 return BoxShape.mappedSpan(a, o, ray, out);
             case CONE:
                 return ConeShape.span(a, o, ray, out);
+            case TORUS:
+                return TorusShape.span(a, o, ray, out, out.roots);
             case EMPTY:
                 return false;
             default:
@@ -171,6 +177,7 @@ final class Shapes {
             case MAPPED_SPHERE -> SphereShape.mappedSurface(a, o, px, py, pz, out);
             case MAPPED_BOX -> BoxShape.mappedSurface(a, o, face, px, py, pz, out);
             case CONE -> ConeShape.surface(a, o, face, px, py, pz, out);
+            case TORUS -> TorusShape.surface(a, o, px, py, pz, out);
             default -> throw unknown(s);
         }
     }
@@ -190,6 +197,7 @@ final class Shapes {
             case MAPPED_SPHERE -> SphereShape.mappedFrame(a, o, out);
             case MAPPED_BOX -> BoxShape.mappedFrame(a, o, face, out);
             case CONE -> ConeShape.frame(a, o, face, out);
+            case TORUS -> TorusShape.frame(a, o, out);
             default -> throw unknown(s);
         }
     }

@@ -36,6 +36,26 @@ class ShapeAttributesTest {
     }
 
     @Test
+    void aTorusHasDefaultsForEverything() {
+        dev.crt.scene.Torus t = (dev.crt.scene.Torus) Scripts.scene(CAMERA + "Scene { Torus { } }\n").entities().get(0);
+        assertThat(t.center()).isEqualTo(Vec3.ZERO);
+        assertThat(t.axis()).isEqualTo(Vec3.Y);
+        assertThat(t.major()).isEqualTo(1);
+        assertThat(t.minor()).isEqualTo(0.25);
+        dev.crt.scene.Torus spindle = (dev.crt.scene.Torus) Scripts.scene(CAMERA
+                + "Scene { Torus { axis -> vec3(0, 0, 2) major -> 0.5 minor -> 0.75 } }\n").entities().get(0);
+        assertThat(spindle.axis()).isEqualTo(Vec3.Z);
+        assertThat(spindle.minor()).isEqualTo(0.75);
+    }
+
+    @Test
+    void aTorusNeedsAnAxisAndPositiveRadii() {
+        at(error("t1 = Torus { axis -> vec3(0, 0, 0) }\n"), 1, 14, "a Torus's axis must not be the zero vector");
+        at(error("t1 = Torus {\n  minor -> 0 }\n"), 2, 3, "minor must be > 0, got 0");
+        at(error("t1 = Torus { major -> -1 }\n"), 1, 14, "major must be > 0, got -1");
+    }
+
+    @Test
     void aCylinderNeedsFromAndTo() {
         at(error("c = Cylinder { from -> vec3(0,0,0) }\n"), 1, 5, "Cylinder needs the attribute 'to'");
     }

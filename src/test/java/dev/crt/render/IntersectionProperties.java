@@ -13,6 +13,7 @@ import dev.crt.scene.Entity;
 import dev.crt.scene.Material;
 import dev.crt.scene.Settings;
 import dev.crt.scene.SourceSpan;
+import dev.crt.scene.Torus;
 import dev.crt.scene.Sphere;
 import java.util.List;
 import java.util.SplittableRandom;
@@ -114,6 +115,9 @@ class IntersectionProperties {
                     r.nextInt(4) == 0 ? 0 : 0.2 + r.nextDouble(), r.nextInt(3) == 0 ? 0 : 0.1 + r.nextDouble(), true, M,
                     Transform.IDENTITY, SourceSpan.NONE)
                     .transformed(r.nextBoolean() ? Transform.IDENTITY : Solids.randomTransform(r, true, spread));
+            case 8 -> new Torus(unit(r).times(r.nextDouble() * spread), unit(r), 0.5 + r.nextDouble(),
+                    r.nextInt(4) == 0 ? 0.6 + r.nextDouble() : 0.1 + 0.4 * r.nextDouble(), M, Transform.IDENTITY, SourceSpan.NONE)
+                    .transformed(r.nextBoolean() ? Transform.IDENTITY : Solids.randomTransform(r, true, spread));
             default -> box(v(-1, -0.5, -0.7), v(0.8, 1.1, 0.4), M)
                     .transformed(Transform.rotation(v(90 * r.nextInt(4), 90 * r.nextInt(4), 90 * r.nextInt(4)))
                             .then(Transform.scaling(v(0.5 + r.nextDouble(), 0.5 + r.nextDouble(), 0.5 + r.nextDouble())))
@@ -122,7 +126,7 @@ class IntersectionProperties {
     }
 
     private static Entity tree(SplittableRandom r, int depth) {
-        if (depth == 0 || r.nextInt(4) == 0) return entity(r, r.nextInt(9), 1.5);
+        if (depth == 0 || r.nextInt(4) == 0) return entity(r, r.nextInt(10), 1.5);
         CsgOperation op = CsgOperation.values()[r.nextInt(3)];
         Entity e = csg(op, tree(r, depth - 1), tree(r, depth - 1));
         return r.nextInt(3) == 0 ? e.transformed(Solids.randomTransform(r, true, 1)) : e;
@@ -158,9 +162,9 @@ class IntersectionProperties {
     }
 
     @Property(tries = 4000)
-    void firstBoundaryMatchesAMarchWithTheInsideTest(@ForAll long seed, @ForAll @IntRange(min = 0, max = 10) int kind) {
+    void firstBoundaryMatchesAMarchWithTheInsideTest(@ForAll long seed, @ForAll @IntRange(min = 0, max = 11) int kind) {
         SplittableRandom r = new SplittableRandom(seed);
-        Entity e = kind == 10 ? wideTree(r) : kind == 9 ? tree(r, 3) : entity(r, kind, 1.5);
+        Entity e = kind == 11 ? wideTree(r) : kind == 10 ? tree(r, 3) : entity(r, kind, 1.5);
         double far = r.nextInt(5) == 0 ? 1e5 : 0;
         Vec3 shift = unit(r).times(far);
         if (far > 0) e = e.transformed(Transform.translation(shift));

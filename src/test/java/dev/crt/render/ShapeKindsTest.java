@@ -59,12 +59,17 @@ class ShapeKindsTest {
                 assertThat(b.isEmpty()).isTrue();
                 continue;
             }
-            // Aimed from outside through the middle of what the shape occupies.
-            Vec3 target = b.isFinite() ? b.min().plus(b.max()).times(0.5) : v(0, -0.5, 0);
-            Vec3 o = target.plus(v(0.31, 0.52, -20));
-            Vec3 d = target.minus(o).normalize();
-            ray.set(o.x(), o.y(), o.z(), d.x(), d.y(), d.z());
-            assertThat(shapes.span(s, ray, span)).as("kind %d is crossed", kind).isTrue();
+            // Aimed from outside through the middle of what the shape occupies, or, for a ring,
+            // through a point between its middle and its edge.
+            boolean crossed = false;
+            for (double f : new double[] {0.5, 0.3, 0.7, 0.2}) {
+                Vec3 target = b.isFinite() ? b.min().times(1 - f).plus(b.max().times(f)) : v(0, -0.5, 0);
+                Vec3 o = target.plus(v(0.31, 0.52, -20));
+                Vec3 d = target.minus(o).normalize();
+                ray.set(o.x(), o.y(), o.z(), d.x(), d.y(), d.z());
+                if (crossed = shapes.span(s, ray, span)) break;
+            }
+            assertThat(crossed).as("kind %d is crossed", kind).isTrue();
             assertThat(span.count).isPositive();
             double t = Double.isFinite(span.tIn[0]) ? span.tIn[0] : span.tOut[0];
             int face = Double.isFinite(span.tIn[0]) ? span.faceIn[0] : span.faceOut[0];

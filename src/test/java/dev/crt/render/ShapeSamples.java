@@ -6,6 +6,7 @@ import dev.crt.scene.Cone;
 import dev.crt.scene.Cylinder;
 import dev.crt.scene.Material;
 import dev.crt.scene.SourceSpan;
+import dev.crt.scene.Torus;
 import dev.crt.scene.Primitive;
 import java.util.List;
 
@@ -18,6 +19,8 @@ final class ShapeSamples {
                 new Cylinder(new Vec3(0, -1, 0.2), new Vec3(0.3, 1, 0), 0.6, true, m, Transform.IDENTITY, SourceSpan.NONE),
                 new Cylinder(new Vec3(0, -1, 0.2), new Vec3(0.3, 1, 0), 0.6, false, m, Transform.IDENTITY, SourceSpan.NONE),
                 new Cone(new Vec3(0.1, -1, 0), new Vec3(0, 1, 0.3), 1, 0.2, true, m, Transform.IDENTITY, SourceSpan.NONE),
-                new Cone(new Vec3(0.1, -1, 0), new Vec3(0, 1, 0.3), 0.9, 0, false, m, Transform.IDENTITY, SourceSpan.NONE));
+                new Cone(new Vec3(0.1, -1, 0), new Vec3(0, 1, 0.3), 0.9, 0, false, m, Transform.IDENTITY, SourceSpan.NONE),
+                new Torus(new Vec3(0.1, 0.2, 0), new Vec3(0.2, 1, -0.3).normalize(), 1, 0.3, m, Transform.IDENTITY, SourceSpan.NONE),
+                new Torus(new Vec3(0, 0, 0), new Vec3(0, 0, 1), 0.5, 0.8, m, Transform.IDENTITY, SourceSpan.NONE));
     }
 }

@@ -9,6 +9,7 @@ import dev.crt.scene.Csg;
 import dev.crt.scene.Entity;
 import dev.crt.scene.Plane;
 import dev.crt.scene.Sphere;
+import dev.crt.scene.Torus;
 
 /**
  * The inside test of every entity written directly from its definition (point mapped back through
@@ -25,6 +26,14 @@ final class Solids {
                     && q.z() >= b.min().z() && q.z() <= b.max().z();
         }
         if (e instanceof Plane pl) return pl.normal().dot(q.minus(pl.position())) <= 0;
+        if (e instanceof Torus t) {
+            // (ρ − R)² + h² ≤ r² with h the height along the axis and ρ the distance from it.
+            Vec3 v = q.minus(t.center());
+            Vec3 a = t.axis().normalize();
+            double h = v.dot(a);
+            double rho = Math.sqrt(Math.max(0, v.dot(v) - h * h));
+            return (rho - t.major()) * (rho - t.major()) + h * h <= t.minor() * t.minor();
+        }
         if (e instanceof Cylinder c) return insideCone(c.from(), c.to(), c.radius(), c.radius(), q);
         if (e instanceof Cone c) return insideCone(c.from(), c.to(), c.radius(), c.radius2(), q);
         Csg c = (Csg) e;

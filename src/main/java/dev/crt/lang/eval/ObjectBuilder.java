@@ -23,6 +23,7 @@ import dev.crt.scene.Plane;
 import dev.crt.scene.PointLight;
 import dev.crt.scene.Rgb;
 import dev.crt.scene.SolidBackground;
+import dev.crt.scene.Torus;
 import dev.crt.scene.SourceSpan;
 import dev.crt.scene.Sphere;
 import java.util.ArrayList;
@@ -50,6 +51,7 @@ final class ObjectBuilder {
         type("Box", ObjectBuilder::box, "cornerA", "cornerB", "material");
         type("Plane", ObjectBuilder::plane, "normal", "position", "material");
         type("Cylinder", ObjectBuilder::cylinder, "from", "to", "radius", "capped", "material");
+        type("Torus", ObjectBuilder::torus, "center", "axis", "major", "minor", "material");
         type("Cone", ObjectBuilder::cone, "from", "to", "radius", "radius2", "capped", "material");
         type("Background", ObjectBuilder::background, "color", "horizon", "sky", "image", "angle");
     }
@@ -195,6 +197,15 @@ final class ObjectBuilder {
         axis(a, "Cylinder", from, to);
         return EntityValue.of(new Cylinder(from, to, a.number("radius", 1, Range.POSITIVE), a.bool("capped", true),
                 a.material("material"), Transform.IDENTITY, a.objectSpan()));
+    }
+
+    private Value torus(Attributes a) {
+        Vec3 axis = a.vector("axis", Vec3.Y);
+        Vec3 unit = Builtins.unit(axis);
+        if (a.has("axis") && unit == null) a.error("axis", "a Torus's axis must not be the zero vector");
+        return EntityValue.of(new Torus(a.vector("center", Vec3.ZERO), unit == null ? Vec3.Y : unit,
+                a.number("major", 1, Range.POSITIVE), a.number("minor", 0.25, Range.POSITIVE), a.material("material"),
+                Transform.IDENTITY, a.objectSpan()));
     }
 
     private Value cone(Attributes a) {
