@@ -20,8 +20,8 @@ import dev.crt.scene.Torus;
  * <p>Data after the {@link Affine} placement: R (major), r (minor).
  */
 final class TorusShape {
-    /** Which quartic method tori use; the measurement harness switches it. */
-    static int method = Quartic.ISOLATE;
+    /** The quartic method tori use (docs/benchmarks.md, "Torus roots"). */
+    static final int METHOD = Quartic.ISOLATE;
 
     private TorusShape() {}
 
@@ -57,7 +57,7 @@ final class TorusShape {
         double g = ox * ox + oy * oy + oz * oz;
         double reach = big + small;
         if (g > reach * reach) return false;
-        int n = roots(ox, oy, oz, dx, dy, dz, big, small, roots);
+        int n = roots(METHOD, ox, oy, oz, dx, dy, dz, big, small, roots);
         if (n == 0) return false;
         out.count = 0;
         out.surface = false;
@@ -82,8 +82,8 @@ final class TorusShape {
      * the centre, so o·d = 0): with g = |o|² and k = g + R² − r²,
      * s⁴ + (2k − 4R²(dx² + dy²))s² − 8R²(ox·dx + oy·dy)s + k² − 4R²(ox² + oy²) = 0.
      */
-    static int roots(double ox, double oy, double oz, double dx, double dy, double dz, double big, double small,
-            double[] out) {
+    static int roots(int method, double ox, double oy, double oz, double dx, double dy, double dz, double big,
+            double small, double[] out) {
         double g = ox * ox + oy * oy + oz * oz;
         double k = g + (big - small) * (big + small);
         double r2 = 4 * big * big;
