@@ -29,8 +29,6 @@ final class Tracer {
     private final int[] items;
     private final int[] unbounded;
     private final Bvh bvh;
-    private final double[] boxes;
-    private final int[] children;
     private final Lights lights;
     private final BackgroundShader background;
 
@@ -39,8 +37,7 @@ final class Tracer {
     final Hit hit = new Hit();
     private final SurfacePoint surface = new SurfacePoint();
     private final CsgSolids.Scratch csgScratch;
-    private final int[] stack;
-    private final double[] stackT;
+    private final BvhWalker walker;
     private final double[] colour = new double[3];
     /**
      * Per light, the last opaque item that blocked it: neighbouring shadow rays usually share their
@@ -60,16 +57,12 @@ final class Tracer {
         this.items = geometry.items;
         this.unbounded = geometry.unbounded;
         this.bvh = geometry.bvh;
-        this.boxes = bvh == null ? null : bvh.box;
-        this.children = bvh == null ? null : bvh.children;
         this.lights = lights;
         this.background = background;
         csgScratch = new CsgSolids.Scratch(csg);
         lastOccluder = new int[lights.count];
         java.util.Arrays.fill(lastOccluder, NONE);
-        int depth = bvh == null ? 1 : bvh.depth + 2;
-        stack = new int[depth];
-        stackT = new double[depth];
+        walker = new BvhWalker(bvh == null ? 1 : bvh.depth + 2);
     }
 
     Shapes shapes() { return shapes; }
@@ -231,69 +224,42 @@ final class Tracer {
             }
             return found;
         }
-        if (ray.entry(bvh.root, 0, 0, tMax) == Double.POSITIVE_INFINITY) return found;
-        double[] boxes = this.boxes;
-        int[] children = this.children;
-        int top = 0;
-        int node = 0;
-        while (true) {
-            if (Bvh.isLeaf(node)) {
-                for (int k = Bvh.leafFirst(node), end = k + Bvh.leafCount(node); k < end; k++) {
-                    if (hitItem(items[k], tMax)) {
-                        found = true;
-                        tMax = hit.t;
-                    }
-                }
-            } else {
-                int left = children[2 * node], right = children[2 * node + 1];
-                double tl = ray.entry(boxes, 12 * node, 0, tMax), tr = ray.entry(boxes, 12 * node + 6, 0, tMax);
-                if (tl != Double.POSITIVE_INFINITY) {
-                    if (tr != Double.POSITIVE_INFINITY) {
-                        if (tl <= tr) {
-                            stack[top] = right;
-                            stackT[top++] = tr;
-                            node = left;
-                        } else {
-                            stack[top] = left;
-                            stackT[top++] = tl;
-                            node = right;
-                        }
-                    } else {
-                        node = left;
-                    }
-                    continue;
-                } else if (tr != Double.POSITIVE_INFINITY) {
-                    node = right;
-                    continue;
+        BvhWalker walk = walker;
+        if (!walk.start(bvh, ray, 0, tMax)) return found;
+        for (int leaf = walk.nextNearest(tMax); leaf != BvhWalker.END; leaf = walk.nextNearest(tMax)) {
+            for (int k = Bvh.leafFirst(leaf), end = k + Bvh.leafCount(leaf); k < end; k++) {
+                if (hitItem(items[k], tMax)) {
+                    found = true;
+                    tMax = hit.t;
                 }
             }
-            do {
-                if (top == 0) return found;
-                node = stack[--top];
-            } while (stackT[top] >= tMax);
         }
+        return found;
     }
 
     private boolean hitItem(int item, double tMax) {
         if (item < 0) return csg.closestHit(-item - 1, ray, tMax, shapes, geometry.materials, span, csgScratch, hit);
         if (!shapes.span(item, ray, span)) return false;
-        double t;
-        int face;
-        if (span.tIn > 0) {
-            t = span.tIn;
-            face = span.faceIn;
-        } else if (span.tOut > 0) {
-            t = span.tOut;
-            face = span.faceOut;
-        } else {
-            return false;
+        for (int i = 0; i < span.count; i++) {
+            double t;
+            int face;
+            if (span.tIn[i] > 0) {
+                t = span.tIn[i];
+                face = span.faceIn[i];
+            } else if (span.tOut[i] > 0) {
+                t = span.tOut[i];
+                face = span.faceOut[i];
+            } else {
+                continue;
+            }
+            if (!(t < tMax)) return false;
+            hit.t = t;
+            hit.shape = item;
+            hit.face = face;
+            hit.flip = false;
+            return true;
         }
-        if (!(t < tMax)) return false;
-        hit.t = t;
-        hit.shape = item;
-        hit.face = face;
-        hit.flip = false;
-        return true;
+        return false;
     }
 
     /**
@@ -317,32 +283,15 @@ final class Tracer {
             }
             return product;
         }
-        if (ray.entry(bvh.root, 0, 0, tMax) == Double.POSITIVE_INFINITY) return product;
-        double[] boxes = this.boxes;
-        int[] children = this.children;
-        int top = 0;
-        int node = 0;
-        while (true) {
-            if (Bvh.isLeaf(node)) {
-                for (int k = Bvh.leafFirst(node), end = k + Bvh.leafCount(node); k < end; k++) {
-                    product *= itemTransmittance(items[k], tMax);
-                    if (product == 0) return blockedBy(light, items[k]);
-                }
-            } else {
-                boolean hl = ray.enters(boxes, 12 * node, 0, tMax);
-                boolean hr = ray.enters(boxes, 12 * node + 6, 0, tMax);
-                if (hl) {
-                    if (hr) stack[top++] = children[2 * node + 1];
-                    node = children[2 * node];
-                    continue;
-                } else if (hr) {
-                    node = children[2 * node + 1];
-                    continue;
-                }
+        BvhWalker walk = walker;
+        if (!walk.start(bvh, ray, 0, tMax)) return product;
+        for (int leaf = walk.nextAny(tMax); leaf != BvhWalker.END; leaf = walk.nextAny(tMax)) {
+            for (int k = Bvh.leafFirst(leaf), end = k + Bvh.leafCount(leaf); k < end; k++) {
+                product *= itemTransmittance(items[k], tMax);
+                if (product == 0) return blockedBy(light, items[k]);
             }
-            if (top == 0) return product;
-            node = stack[--top];
         }
+        return product;
     }
 
     private double blockedBy(int light, int item) {
@@ -355,10 +304,15 @@ final class Tracer {
             return csg.transmittance(-item - 1, ray, tMax, shapes, geometry.materials, span, csgScratch);
         }
         if (!shapes.span(item, ray, span)) return 1;
-        boolean in = span.tIn > 0 && span.tIn < tMax;
-        boolean out = span.tOut > 0 && span.tOut < tMax;
-        if (!in && !out) return 1;
+        int crossings = 0;
+        for (int i = 0; i < span.count; i++) {
+            if (span.tIn[i] > 0 && span.tIn[i] < tMax) crossings++;
+            if (span.tOut[i] > 0 && span.tOut[i] < tMax && !span.surface) crossings++;
+        }
+        if (crossings == 0) return 1;
         double kt = materials[shapes.material[item] * Materials.STRIDE + Materials.TRANSPARENCY];
-        return in && out ? kt * kt : kt;
+        double product = kt;
+        for (int k = 1; k < crossings; k++) product *= kt;
+        return product;
     }
 }

@@ -2,6 +2,7 @@ package dev.crt.lang.eval;
 
 import dev.crt.geom.Vec3;
 import dev.crt.lang.value.BackgroundValue;
+import dev.crt.lang.value.BooleanValue;
 import dev.crt.lang.value.CameraValue;
 import dev.crt.lang.value.ColorValue;
 import dev.crt.lang.value.MaterialValue;
@@ -101,6 +102,14 @@ final class Attributes {
         if (v instanceof VectorValue vec) return vec.vector();
         wrongType(name, "a vec3", v);
         return Vec3.ZERO;
+    }
+
+    boolean bool(String name, boolean fallback) {
+        Given g = given.get(name);
+        if (g == null) return fallback;
+        if (g.value() instanceof BooleanValue b) return b.value();
+        wrongType(name, "a boolean", g.value());
+        return fallback;
     }
 
     Rgb color(String name, Rgb fallback) {

@@ -14,6 +14,8 @@ import dev.crt.scene.ApertureShape;
 import dev.crt.scene.Background;
 import dev.crt.scene.Box;
 import dev.crt.scene.Camera;
+import dev.crt.scene.Cone;
+import dev.crt.scene.Cylinder;
 import dev.crt.scene.GradientBackground;
 import dev.crt.scene.Material;
 import dev.crt.scene.ParallelLight;
@@ -21,6 +23,7 @@ import dev.crt.scene.Plane;
 import dev.crt.scene.PointLight;
 import dev.crt.scene.Rgb;
 import dev.crt.scene.SolidBackground;
+import dev.crt.scene.Torus;
 import dev.crt.scene.SourceSpan;
 import dev.crt.scene.Sphere;
 import java.util.ArrayList;
@@ -47,6 +50,9 @@ final class ObjectBuilder {
         type("Sphere", ObjectBuilder::sphere, "center", "radius", "material");
         type("Box", ObjectBuilder::box, "cornerA", "cornerB", "material");
         type("Plane", ObjectBuilder::plane, "normal", "position", "material");
+        type("Cylinder", ObjectBuilder::cylinder, "from", "to", "radius", "capped", "material");
+        type("Torus", ObjectBuilder::torus, "center", "axis", "major", "minor", "material");
+        type("Cone", ObjectBuilder::cone, "from", "to", "radius", "radius2", "capped", "material");
         type("Background", ObjectBuilder::background, "color", "horizon", "sky", "image", "angle");
     }
 
@@ -185,6 +191,38 @@ final class ObjectBuilder {
         if (unit == null) unit = Vec3.Y;
         return EntityValue.of(new Plane(unit, a.vector("position", Vec3.ZERO), a.material("material"),
                 Transform.IDENTITY, a.objectSpan()));
+    }
+
+    private Value cylinder(Attributes a) {
+        Vec3 from = a.vector("from", null), to = a.vector("to", null);
+        axis(a, "Cylinder", from, to);
+        return EntityValue.of(new Cylinder(from, to, a.number("radius", 1, Range.POSITIVE), a.bool("capped", true),
+                a.material("material"), Transform.IDENTITY, a.objectSpan()));
+    }
+
+    private Value torus(Attributes a) {
+        Vec3 axis = a.vector("axis", Vec3.Y);
+        Vec3 unit = Builtins.unit(axis);
+        if (a.has("axis") && unit == null) a.error("axis", "a Torus's axis must not be the zero vector");
+        return EntityValue.of(new Torus(a.vector("center", Vec3.ZERO), unit == null ? Vec3.Y : unit,
+                a.number("major", 1, Range.POSITIVE), a.number("minor", 0.25, Range.POSITIVE), a.material("material"),
+                Transform.IDENTITY, a.objectSpan()));
+    }
+
+    private Value cone(Attributes a) {
+        Vec3 from = a.vector("from", null), to = a.vector("to", null);
+        axis(a, "Cone", from, to);
+        double r0 = a.number("radius", 1, Range.NOT_NEGATIVE), r1 = a.number("radius2", 0, Range.NOT_NEGATIVE);
+        if (r0 == 0 && r1 == 0) a.error(a.has("radius2") ? "radius2" : "radius", "a Cone's radius and radius2 cannot both be 0");
+        return EntityValue.of(new Cone(from, to, r0, r1, a.bool("capped", true), a.material("material"),
+                Transform.IDENTITY, a.objectSpan()));
+    }
+
+    /** The axis of a Cylinder or Cone must have a length (by distance: -0 and 0 are the same coordinate). */
+    private static void axis(Attributes a, String type, Vec3 from, Vec3 to) {
+        if (a.has("from") && a.has("to") && from.minus(to).length() == 0) {
+            a.error("to", "a " + type + "'s to must differ from its from");
+        }
     }
 
     private Value background(Attributes a) {
