@@ -73,6 +73,7 @@ final class PixelSampler {
         t.accR = 0;
         t.accG = 0;
         t.accB = 0;
+        t.startPixel(i, j, seed, 0);
         switch (kind) {
             case GRID -> grid(i, j);
             case JITTERED -> jittered(i, j);
@@ -232,6 +233,7 @@ final class PixelSampler {
         t.accR = 0;
         t.accG = 0;
         t.accB = 0;
+        t.startPixel(i, j, seed, 1);
         long h = PixelRandom.pixelHash(i, j, seed);
         for (int k = pilotCount; k < n; k++) sobolSample(i, j, k, h, 1);
         out[0] = (pilotMean[0] * (double) pilotCount + t.accR) / n;

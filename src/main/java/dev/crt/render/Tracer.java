@@ -46,6 +46,18 @@ final class Tracer {
      */
     private final int[] lastOccluder;
 
+    private final PhongShading phong;
+    /** The generator of the lights' random choices (area light jitter), seeded per pixel. */
+    final PixelRandom lightRandom = new PixelRandom();
+    /** Keeps the lights' stream apart from the pixel sampler's, which is seeded from the same pixel. */
+    private static final long LIGHT_STREAM = 0x4c69676874734c6cL;
+    /** Whether some material absorbs (Beer's law): only then do rays and shadow rays track distances inside solids. */
+    final boolean absorbing;
+    /** The optical depth a·s per channel gathered by the current shadow ray. */
+    private double depthR, depthG, depthB;
+    /** The Beer's-law factors exp(−a·s) of the last {@link #shadow} ray, when {@link #absorbing}. */
+    double shadowR = 1, shadowG = 1, shadowB = 1;
+
     double accR, accG, accB;
     long primaryRays, shadowRays, reflectedRays, refractedRays;
 
@@ -63,6 +75,8 @@ final class Tracer {
         lastOccluder = new int[lights.count];
         java.util.Arrays.fill(lastOccluder, NONE);
         walker = new BvhWalker(bvh == null ? 1 : bvh.depth + 2);
+        absorbing = geometry.materials.absorbing();
+        phong = new PhongShading(this, materials, lights);
     }
 
     Shapes shapes() { return shapes; }
@@ -92,11 +106,18 @@ final class Tracer {
         double delta = OFFSET * Math.max(Math.max(Math.abs(px), Math.abs(py)), Math.max(Math.abs(pz), shapes.scale[s]));
         int m = shapes.material[s] * Materials.STRIDE;
         double[] mat = materials;
+        if (!entering && absorbing) {
+            // The segment just travelled lay inside this surface's solid: Beer's law over its length.
+            double t = hit.t;
+            wr *= Math.exp(-mat[m + Materials.AR] * t);
+            wg *= Math.exp(-mat[m + Materials.AG] * t);
+            wb *= Math.exp(-mat[m + Materials.AB] * t);
+        }
         double kt = mat[m + Materials.TRANSPARENCY];
         double kr = mat[m + Materials.REFLECTIVITY];
         double local = 1 - kt;
         if (local != 0) {
-            shadeLocal(m, px, py, pz, nx, ny, nz, -dx, -dy, -dz, delta);
+            phong.shade(m, px, py, pz, nx, ny, nz, -dx, -dy, -dz, delta, colour);
             accR += wr * local * colour[0];
             accG += wg * local * colour[1];
             accB += wb * local * colour[2];
@@ -104,6 +125,11 @@ final class Tracer {
         if (depth == 0) return;
         double dDotN = dx * nx + dy * ny + dz * nz;
         double rdx = dx - 2 * dDotN * nx, rdy = dy - 2 * dDotN * ny, rdz = dz - 2 * dDotN * nz;
+        if (kt > 0 && mat[m + Materials.FRESNEL] != 0) {
+            fresnel(px, py, pz, dx, dy, dz, nx, ny, nz, rdx, rdy, rdz, entering, delta, depth, kr, kt, mat[m + Materials.IOR],
+                    wr, wg, wb);
+            return;
+        }
         if (kr > 0) {
             reflectedRays++;
             trace(px + delta * nx, py + delta * ny, pz + delta * nz, rdx, rdy, rdz, depth - 1, wr * kr, wg * kr, wb * kr);
@@ -124,69 +150,66 @@ final class Tracer {
     }
 
     /**
-     * E + Σℓ aℓ(Cℓ⊙C) + Sℓ·Aℓ·(kd·max(0,N·ω)(Cℓ⊙C) + ks·max(0,R·V)^n·Cℓ) into {@code colour}. A light
-     * whose diffuse and specular terms are both zero here casts no shadow ray.
+     * The reflected and refracted terms of a {@code fresnel -> true} material:
+     * kt·(Fr·trace(reflected) + (1 − Fr)·trace(refracted)) + kr·trace(reflected), Fr = 1 under total
+     * internal reflection; the two reflected terms share one ray.
      */
-    private void shadeLocal(int m, double px, double py, double pz, double nx, double ny, double nz,
-            double vx, double vy, double vz, double delta) {
-        double[] mat = materials;
-        double cr = mat[m + Materials.R], cg = mat[m + Materials.G], cb = mat[m + Materials.B];
-        double kd = mat[m + Materials.DIFFUSE], ks = mat[m + Materials.SPECULAR];
-        double shininess = mat[m + Materials.SHININESS];
-        double r = mat[m + Materials.ER] + lights.ambientR * cr;
-        double g = mat[m + Materials.EG] + lights.ambientG * cg;
-        double b = mat[m + Materials.EB] + lights.ambientB * cb;
-        double nv = nx * vx + ny * vy + nz * vz;
-        Lights l = lights;
-        for (int i = 0; i < l.count; i++) {
-            double wx, wy, wz, dist, att;
-            if (l.parallel[i]) {
-                wx = l.x[i];
-                wy = l.y[i];
-                wz = l.z[i];
-                dist = Double.POSITIVE_INFINITY;
-                att = 1;
-            } else {
-                wx = l.x[i] - px;
-                wy = l.y[i] - py;
-                wz = l.z[i] - pz;
-                double d2 = wx * wx + wy * wy + wz * wz;
-                dist = Math.sqrt(d2);
-                wx /= dist;
-                wy /= dist;
-                wz /= dist;
-                att = l.falloff[i] > 0 ? l.falloff[i] / d2 : 1;
-            }
-            double nw = nx * wx + ny * wy + nz * wz;
-            double diffuse = nw > 0 ? kd * nw : 0;
-            double specular = 0;
-            if (ks != 0) {
-                double rv = 2 * nw * nv - (wx * vx + wy * vy + wz * vz);
-                if (rv > 0) specular = ks * power(rv, shininess);
-            }
-            if (diffuse == 0 && specular == 0) continue;
-            double side = nw > 0 ? delta : -delta;
-            double ox = px + side * nx, oy = py + side * ny, oz = pz + side * nz;
-            double s;
-            if (l.parallel[i]) {
-                s = transmittance(ox, oy, oz, wx, wy, wz, dist, i);
-            } else {
-                // Aimed from the moved origin at the light itself and stopped short of it by the same
-                // relative margin, so a light lying on a surface is not shadowed by that surface.
-                double sx = l.x[i] - ox, sy = l.y[i] - oy, sz = l.z[i] - oz;
-                double reach = Math.sqrt(sx * sx + sy * sy + sz * sz);
-                double margin = Math.max(delta, OFFSET * Math.max(Math.max(Math.abs(l.x[i]), Math.abs(l.y[i])), Math.abs(l.z[i])));
-                s = reach > margin ? transmittance(ox, oy, oz, sx / reach, sy / reach, sz / reach, reach - margin, i) : 1;
-            }
-            if (s == 0) continue;
-            double f = s * att;
-            r += f * (diffuse * l.r[i] * cr + specular * l.r[i]);
-            g += f * (diffuse * l.g[i] * cg + specular * l.g[i]);
-            b += f * (diffuse * l.b[i] * cb + specular * l.b[i]);
+    private void fresnel(double px, double py, double pz, double dx, double dy, double dz, double nx, double ny, double nz,
+            double rdx, double rdy, double rdz, boolean entering, double delta, int depth, double kr, double kt, double ior,
+            double wr, double wg, double wb) {
+        double eta = entering ? 1 / ior : ior;
+        double cosI = -(dx * nx + dy * ny + dz * nz);
+        double k = 1 - eta * eta * (1 - cosI * cosI);
+        double cosT = k < 0 ? 0 : Math.sqrt(k);
+        double fr = k < 0 ? 1 : Fresnel.reflectance(cosI, cosT, eta);
+        double reflect = kr + kt * fr, refract = kt * (1 - fr);
+        if (reflect > 0) {
+            reflectedRays++;
+            trace(px + delta * nx, py + delta * ny, pz + delta * nz, rdx, rdy, rdz, depth - 1,
+                    wr * reflect, wg * reflect, wb * reflect);
         }
-        colour[0] = r;
-        colour[1] = g;
-        colour[2] = b;
+        if (refract > 0) {
+            refractedRays++;
+            double c = eta * cosI - cosT;
+            trace(px - delta * nx, py - delta * ny, pz - delta * nz, eta * dx + c * nx, eta * dy + c * ny, eta * dz + c * nz,
+                    depth - 1, wr * refract, wg * refract, wb * refract);
+        }
+    }
+
+    /**
+     * The shadow factor Sℓ of light sample {@code ls} seen from p: the shadow ray leaves p moved by
+     * {@code side} along n (to the side the light is on) and is aimed at the sample's point, stopped
+     * short of it by the same relative margin, so a light lying on a surface is not shadowed by that
+     * surface. With absorbing materials in the scene, {@link #shadowR}, G, B hold the ray's
+     * Beer's-law factors.
+     */
+    double shadow(LightSample ls, double px, double py, double pz, double nx, double ny, double nz, double side, int light) {
+        double ox = px + side * nx, oy = py + side * ny, oz = pz + side * nz;
+        if (absorbing) {
+            depthR = 0;
+            depthG = 0;
+            depthB = 0;
+        }
+        double s;
+        if (!ls.finite) {
+            s = transmittance(ox, oy, oz, ls.wx, ls.wy, ls.wz, Double.POSITIVE_INFINITY, light);
+        } else {
+            double sx = ls.tx - ox, sy = ls.ty - oy, sz = ls.tz - oz;
+            double reach = Math.sqrt(sx * sx + sy * sy + sz * sz);
+            double margin = Math.max(Math.abs(side), OFFSET * Math.max(Math.max(Math.abs(ls.tx), Math.abs(ls.ty)), Math.abs(ls.tz)));
+            s = reach > margin ? transmittance(ox, oy, oz, sx / reach, sy / reach, sz / reach, reach - margin, light) : 1;
+        }
+        if (absorbing) {
+            shadowR = Math.exp(-depthR);
+            shadowG = Math.exp(-depthG);
+            shadowB = Math.exp(-depthB);
+        }
+        return s;
+    }
+
+    /** Seeds the light generator for pixel (i, j) and pass {@code pass}, when some light needs one. */
+    void startPixel(int i, int j, long seed, int pass) {
+        if (lights.random) lightRandom.seed(i, j, seed ^ (LIGHT_STREAM + pass));
     }
 
     /**
@@ -294,6 +317,18 @@ final class Tracer {
         return product;
     }
 
+    /** Adds the optical depth of the segment's stretches inside the solid of {@link #span}, of material m. */
+    private void absorb(int m, double tMax) {
+        double inside = 0;
+        for (int i = 0; i < span.count; i++) {
+            double a = Math.max(span.tIn[i], 0), b = Math.min(span.tOut[i], tMax);
+            if (b > a) inside += b - a;
+        }
+        depthR += materials[m + Materials.AR] * inside;
+        depthG += materials[m + Materials.AG] * inside;
+        depthB += materials[m + Materials.AB] * inside;
+    }
+
     private double blockedBy(int light, int item) {
         lastOccluder[light] = item;
         return 0;
@@ -310,7 +345,9 @@ final class Tracer {
             if (span.tOut[i] > 0 && span.tOut[i] < tMax && !span.surface) crossings++;
         }
         if (crossings == 0) return 1;
-        double kt = materials[shapes.material[item] * Materials.STRIDE + Materials.TRANSPARENCY];
+        int m = shapes.material[item] * Materials.STRIDE;
+        double kt = materials[m + Materials.TRANSPARENCY];
+        if (absorbing && kt != 0 && !span.surface) absorb(m, tMax);
         double product = kt;
         for (int k = 1; k < crossings; k++) product *= kt;
         return product;

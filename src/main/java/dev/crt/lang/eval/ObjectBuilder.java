@@ -9,8 +9,10 @@ import dev.crt.lang.value.CameraValue;
 import dev.crt.lang.value.EntityValue;
 import dev.crt.lang.value.LightValue;
 import dev.crt.lang.value.MaterialValue;
+import dev.crt.lang.value.NumberValue;
 import dev.crt.lang.value.Value;
 import dev.crt.scene.ApertureShape;
+import dev.crt.scene.AreaLight;
 import dev.crt.scene.Background;
 import dev.crt.scene.Box;
 import dev.crt.scene.Camera;
@@ -23,6 +25,7 @@ import dev.crt.scene.Plane;
 import dev.crt.scene.PointLight;
 import dev.crt.scene.Rgb;
 import dev.crt.scene.SolidBackground;
+import dev.crt.scene.SpotLight;
 import dev.crt.scene.Torus;
 import dev.crt.scene.SourceSpan;
 import dev.crt.scene.Sphere;
@@ -45,8 +48,10 @@ final class ObjectBuilder {
         type("Camera", ObjectBuilder::camera, "position", "pointing", "fov", "roll", "aperture", "focaldistance", "apertureshape");
         type("PointLight", ObjectBuilder::pointLight, "origin", "color", "falloff", "ambient");
         type("ParallelLight", ObjectBuilder::parallelLight, "from", "pointing", "color", "ambient");
+        type("SpotLight", ObjectBuilder::spotLight, "origin", "pointing", "angle", "innerangle", "color", "falloff", "ambient");
+        type("AreaLight", ObjectBuilder::areaLight, "corner", "edge1", "edge2", "samples", "color", "falloff", "ambient");
         type("Material", ObjectBuilder::material, "color", "diffuse", "specular", "shininess", "reflectivity",
-                "transparency", "ior", "emission");
+                "transparency", "ior", "emission", "fresnel", "absorption");
         type("Sphere", ObjectBuilder::sphere, "center", "radius", "material");
         type("Box", ObjectBuilder::box, "cornerA", "cornerB", "material");
         type("Plane", ObjectBuilder::plane, "normal", "position", "material");
@@ -59,6 +64,9 @@ final class ObjectBuilder {
     private static void type(String name, BiFunction<ObjectBuilder, Attributes, Value> build, String... attributes) {
         TYPES.put(name, new ObjectType(Set.copyOf(Arrays.asList(attributes)), build));
     }
+
+    /** An area light's n is capped so that n² shadow rays per shading point stay a render, not a hang. */
+    static final int MAX_AREA_SAMPLES = 256;
 
     private final Evaluator evaluator;
     private final Assets assets;
@@ -158,6 +166,31 @@ final class ObjectBuilder {
                 a.number("ambient", 0, Range.NOT_NEGATIVE), a.typeSpan()));
     }
 
+    private Value spotLight(Attributes a) {
+        Vec3 origin = a.vector("origin", null), pointing = a.vector("pointing", null);
+        if (a.has("origin") && a.has("pointing") && origin.minus(pointing).length() == 0) {
+            a.error("pointing", "a SpotLight's pointing must differ from its origin");
+        }
+        double angle = a.number("angle", 30, new Range(0, true, 90, false));
+        double inner = a.number("innerangle", angle, new Range(0, false, angle, false));
+        return new LightValue(new SpotLight(origin, pointing, angle, inner, a.color("color", Rgb.WHITE),
+                a.number("falloff", 0, Range.NOT_NEGATIVE), a.number("ambient", 0, Range.NOT_NEGATIVE), a.typeSpan()));
+    }
+
+    private Value areaLight(Attributes a) {
+        Vec3 corner = a.vector("corner", null), e1 = a.vector("edge1", null), e2 = a.vector("edge2", null);
+        if (a.has("edge1") && a.has("edge2") && e1.cross(e2).length() == 0) {
+            a.error("edge2", "an AreaLight's edge1 and edge2 must span a parallelogram (not zero, not parallel)");
+        }
+        int samples = a.integer("samples", 4, 1);
+        if (samples > MAX_AREA_SAMPLES) {
+            a.error("samples", "samples must be at most " + MAX_AREA_SAMPLES + " (that is " + MAX_AREA_SAMPLES * MAX_AREA_SAMPLES
+                    + " shadow rays per shading point), got " + samples);
+        }
+        return new LightValue(new AreaLight(corner, e1, e2, samples, a.color("color", Rgb.WHITE),
+                a.number("falloff", 0, Range.NOT_NEGATIVE), a.number("ambient", 0, Range.NOT_NEGATIVE), a.typeSpan()));
+    }
+
     private Value material(Attributes a) {
         Material d = Material.DEFAULT;
         return new MaterialValue(new Material(
@@ -169,7 +202,19 @@ final class ObjectBuilder {
                 a.number("transparency", d.transparency(), Range.UNIT),
                 a.number("ior", d.ior(), Range.POSITIVE),
                 a.color("emission", d.emission()),
-                a.has("diffuse")));
+                a.has("diffuse"),
+                a.bool("fresnel", false),
+                absorption(a)));
+    }
+
+    private static Rgb absorption(Attributes a) {
+        Rgb c = a.color("absorption", Rgb.BLACK);
+        if (c.r() < 0 || c.g() < 0 || c.b() < 0) {
+            a.error("absorption", "absorption must not be negative, got rgb(" + NumberValue.format(c.r()) + ", "
+                    + NumberValue.format(c.g()) + ", " + NumberValue.format(c.b()) + ")");
+            return Rgb.BLACK;
+        }
+        return c;
     }
 
     private Value sphere(Attributes a) {
