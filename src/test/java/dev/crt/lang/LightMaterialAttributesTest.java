@@ -54,6 +54,17 @@ class LightMaterialAttributesTest {
     }
 
     @Test
+    void cameraTakesAProjection() {
+        Scene s = Scripts.scene("Settings { camera -> Camera { position -> vec3(0,0,-5) pointing -> vec3(0,0,0)"
+                + " projection -> \"spherical\" } }\nScene { Sphere { } }\n");
+        assertThat(s.settings().camera().projection()).isEqualTo(dev.crt.scene.Projection.SPHERICAL);
+        assertThat(Scripts.scene(CAMERA + "Scene { Sphere { } }\n").settings().camera().projection())
+                .isEqualTo(dev.crt.scene.Projection.PERSPECTIVE);
+        at(error("c = Camera { position -> vec3(0,0,-5) pointing -> vec3(0,0,0) projection -> \"spherial\" }\n"), 1, 63,
+                "projection must be one of \"perspective\", \"spherical\", \"cylindrical\", got \"spherial\" (did you mean 'spherical'?)");
+    }
+
+    @Test
     void badLightAndMaterialAttributesAreDiagnosedWhereTheyStand() {
         at(error("l = SpotLight { origin -> vec3(0,0,0) pointing -> vec3(0,0,0) }\n"), 1, 39,
                 "a SpotLight's pointing must differ from its origin");

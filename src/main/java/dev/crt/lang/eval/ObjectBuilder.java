@@ -23,6 +23,7 @@ import dev.crt.scene.Material;
 import dev.crt.scene.ParallelLight;
 import dev.crt.scene.Plane;
 import dev.crt.scene.PointLight;
+import dev.crt.scene.Projection;
 import dev.crt.scene.Rgb;
 import dev.crt.scene.SolidBackground;
 import dev.crt.scene.SpotLight;
@@ -45,7 +46,8 @@ final class ObjectBuilder {
     private static final Map<String, ObjectType> TYPES = new LinkedHashMap<>();
 
     static {
-        type("Camera", ObjectBuilder::camera, "position", "pointing", "fov", "roll", "aperture", "focaldistance", "apertureshape");
+        type("Camera", ObjectBuilder::camera, "position", "pointing", "fov", "roll", "aperture", "focaldistance", "apertureshape",
+                "projection");
         type("PointLight", ObjectBuilder::pointLight, "origin", "color", "falloff", "ambient");
         type("ParallelLight", ObjectBuilder::parallelLight, "from", "pointing", "color", "ambient");
         type("SpotLight", ObjectBuilder::spotLight, "origin", "pointing", "angle", "innerangle", "color", "falloff", "ambient");
@@ -147,7 +149,19 @@ final class ObjectBuilder {
             a.error("apertureshape", "apertureshape must be one of \"" + String.join("\", \"", shapes) + "\", got \""
                     + shapeName + "\"" + Spelling.suggestion(shapeName.toLowerCase(Locale.ROOT), shapes));
         }
-        return new CameraValue(new Camera(position, pointing, fov, roll, aperture, focalDistance, shape, a.typeSpan()));
+        String projectionName = a.string("projection", "perspective");
+        Projection projection = Projection.PERSPECTIVE;
+        List<String> projections = new ArrayList<>();
+        for (Projection p : Projection.values()) {
+            projections.add(p.scriptName());
+            if (p.scriptName().equals(projectionName)) projection = p;
+        }
+        if (!projections.contains(projectionName)) {
+            a.error("projection", "projection must be one of \"" + String.join("\", \"", projections) + "\", got \""
+                    + projectionName + "\"" + Spelling.suggestion(projectionName.toLowerCase(Locale.ROOT), projections));
+        }
+        return new CameraValue(new Camera(position, pointing, fov, roll, aperture, focalDistance, shape, projection,
+                a.typeSpan()));
     }
 
     private Value pointLight(Attributes a) {
