@@ -34,10 +34,31 @@ final class PhongShading {
         LightSample ls = sample;
         Tracer t = tracer;
         for (int i = 0; i < l.count; i++) {
+            byte kind = l.kind[i];
             for (int k = 0, samples = l.sampleCount(i); k < samples; k++) {
-                l.sample(i, k, px, py, pz, t.lightRandom, ls);
-                if (ls.weight == 0) continue;
-                double wx = ls.wx, wy = ls.wy, wz = ls.wz;
+                double wx, wy, wz, d2, falloff, weight;
+                if (kind == Lights.POINT) {
+                    // The common case in locals (PointLightSource's formulas): no scratch traffic per light.
+                    wx = l.x[i] - px;
+                    wy = l.y[i] - py;
+                    wz = l.z[i] - pz;
+                    d2 = wx * wx + wy * wy + wz * wz;
+                    double dist = Math.sqrt(d2);
+                    wx /= dist;
+                    wy /= dist;
+                    wz /= dist;
+                    falloff = l.falloff[i];
+                    weight = 1;
+                } else {
+                    l.sample(i, k, px, py, pz, t.lightRandom, ls);
+                    weight = ls.weight;
+                    if (weight == 0) continue;
+                    wx = ls.wx;
+                    wy = ls.wy;
+                    wz = ls.wz;
+                    d2 = ls.d2;
+                    falloff = ls.falloff;
+                }
                 double nw = nx * wx + ny * wy + nz * wz;
                 double diffuse = nw > 0 ? kd * nw : 0;
                 double specular = 0;
@@ -46,10 +67,13 @@ final class PhongShading {
                     if (rv > 0) specular = ks * Tracer.power(rv, shininess);
                 }
                 if (diffuse == 0 && specular == 0) continue;
-                double s = t.shadow(ls, px, py, pz, nx, ny, nz, nw > 0 ? delta : -delta, i);
+                double side = nw > 0 ? delta : -delta;
+                double s = kind == Lights.POINT
+                        ? t.shadowTo(px + side * nx, py + side * ny, pz + side * nz, l.x[i], l.y[i], l.z[i], side, i)
+                        : t.shadow(ls, px, py, pz, nx, ny, nz, side, i);
                 if (s == 0) continue;
-                double att = ls.falloff > 0 ? ls.falloff / ls.d2 : 1;
-                double f = s * att * ls.weight;
+                double att = falloff > 0 ? falloff / d2 : 1;
+                double f = s * att * weight;
                 double fr = f, fg = f, fb = f;
                 if (t.absorbing) {
                     fr *= t.shadowR;

@@ -185,26 +185,36 @@ final class Tracer {
      */
     double shadow(LightSample ls, double px, double py, double pz, double nx, double ny, double nz, double side, int light) {
         double ox = px + side * nx, oy = py + side * ny, oz = pz + side * nz;
+        if (ls.finite) return shadowTo(ox, oy, oz, ls.tx, ls.ty, ls.tz, side, light);
         if (absorbing) {
             depthR = 0;
             depthG = 0;
             depthB = 0;
         }
-        double s;
-        if (!ls.finite) {
-            s = transmittance(ox, oy, oz, ls.wx, ls.wy, ls.wz, Double.POSITIVE_INFINITY, light);
-        } else {
-            double sx = ls.tx - ox, sy = ls.ty - oy, sz = ls.tz - oz;
-            double reach = Math.sqrt(sx * sx + sy * sy + sz * sz);
-            double margin = Math.max(Math.abs(side), OFFSET * Math.max(Math.max(Math.abs(ls.tx), Math.abs(ls.ty)), Math.abs(ls.tz)));
-            s = reach > margin ? transmittance(ox, oy, oz, sx / reach, sy / reach, sz / reach, reach - margin, light) : 1;
-        }
-        if (absorbing) {
-            shadowR = Math.exp(-depthR);
-            shadowG = Math.exp(-depthG);
-            shadowB = Math.exp(-depthB);
-        }
+        double s = transmittance(ox, oy, oz, ls.wx, ls.wy, ls.wz, Double.POSITIVE_INFINITY, light);
+        if (absorbing) absorbed();
         return s;
+    }
+
+    /** The shadow factor of the segment from o (already moved off the surface by {@code side}) to the light point q. */
+    double shadowTo(double ox, double oy, double oz, double qx, double qy, double qz, double side, int light) {
+        if (absorbing) {
+            depthR = 0;
+            depthG = 0;
+            depthB = 0;
+        }
+        double sx = qx - ox, sy = qy - oy, sz = qz - oz;
+        double reach = Math.sqrt(sx * sx + sy * sy + sz * sz);
+        double margin = Math.max(Math.abs(side), OFFSET * Math.max(Math.max(Math.abs(qx), Math.abs(qy)), Math.abs(qz)));
+        double s = reach > margin ? transmittance(ox, oy, oz, sx / reach, sy / reach, sz / reach, reach - margin, light) : 1;
+        if (absorbing) absorbed();
+        return s;
+    }
+
+    private void absorbed() {
+        shadowR = Math.exp(-depthR);
+        shadowG = Math.exp(-depthG);
+        shadowB = Math.exp(-depthB);
     }
 
     /** Seeds the light generator for pixel (i, j) and pass {@code pass}, when some light needs one. */
