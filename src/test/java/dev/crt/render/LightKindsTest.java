@@ -41,6 +41,21 @@ class LightKindsTest {
     }
 
     @Test
+    void everyLightTypeHasItsOwnKindTag() {
+        // A new Light record must get a tag and a class in Lights' dispatch, or this fails.
+        List<Light> one = List.of(point(v(0, 1, 0), Rgb.WHITE, 0, 0), parallel(v(0, 1, 0), Vec3.ZERO, Rgb.WHITE, 0),
+                new SpotLight(v(0, 1, 0), Vec3.ZERO, 30, 20, Rgb.WHITE, 0, 0, SourceSpan.NONE),
+                new AreaLight(v(0, 1, 0), v(1, 0, 0), v(0, 0, 1), 2, Rgb.WHITE, 0, 0, SourceSpan.NONE));
+        assertThat(one.stream().map(Object::getClass)).containsExactlyInAnyOrder(Light.class.getPermittedSubclasses());
+        Lights lights = new Lights(one);
+        assertThat(new byte[] {lights.kind[0], lights.kind[1], lights.kind[2], lights.kind[3]})
+                .containsExactly(Lights.POINT, Lights.PARALLEL, Lights.SPOT, Lights.AREA);
+        assertThat(lights.sampleCount(3)).isEqualTo(4);
+        assertThat(lights.random).isTrue();
+        assertThat(new Lights(one.subList(0, 3)).random).isFalse();
+    }
+
+    @Test
     void spotIsFullInsideTheInnerConeZeroOutsideTheAngleAndMonotoneBetween() {
         Vec3 q = v(0, 0, -2);
         double angle = 30, inner = 12;
