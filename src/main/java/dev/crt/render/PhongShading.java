@@ -19,11 +19,13 @@ final class PhongShading {
         this.lights = lights;
     }
 
-    /** The local colour of material m at p with ray-facing normal n and view direction v, into {@code colour}. */
-    void shade(int m, double px, double py, double pz, double nx, double ny, double nz,
+    /**
+     * The local colour of material m, of surface colour C = (cr, cg, cb), at p with ray-facing
+     * normal n and view direction v, into {@code colour}.
+     */
+    void shade(int m, double cr, double cg, double cb, double px, double py, double pz, double nx, double ny, double nz,
             double vx, double vy, double vz, double delta, double[] colour) {
         double[] mat = materials;
-        double cr = mat[m + Materials.R], cg = mat[m + Materials.G], cb = mat[m + Materials.B];
         double kd = mat[m + Materials.DIFFUSE], ks = mat[m + Materials.SPECULAR];
         double shininess = mat[m + Materials.SHININESS];
         double r = mat[m + Materials.ER] + lights.ambientR * cr;

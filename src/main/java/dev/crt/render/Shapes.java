@@ -45,6 +45,11 @@ final class Shapes {
     double[] scale = new double[16];
     double[] data = new double[64];
     private int dataSize;
+    /**
+     * Per shape, the 3×4 world-to-entity matrix of its placement (12 doubles, row-major): solid
+     * textures are evaluated in the entity's own coordinates, before its modifiers.
+     */
+    double[] toEntity = new double[16 * 12];
 
     int count() { return count; }
 
@@ -53,6 +58,7 @@ final class Shapes {
         int s = next();
         material[s] = materialIndex;
         offset[s] = dataSize;
+        System.arraycopy(toWorld.inverseMatrix(), 0, toEntity, s * 12, 12);
         if (p instanceof Sphere sp) SphereShape.add(this, s, sp, toWorld);
         else if (p instanceof Box b) BoxShape.add(this, s, b, toWorld);
         else if (p instanceof Plane pl) PlaneShape.add(this, s, pl, toWorld);
@@ -69,6 +75,7 @@ final class Shapes {
         kind[t] = from.kind[s];
         material[t] = from.material[s];
         scale[t] = from.scale[s];
+        System.arraycopy(from.toEntity, s * 12, toEntity, t * 12, 12);
         offset[t] = dataSize;
         int start = from.offset[s], end = s + 1 < from.count ? from.offset[s + 1] : from.dataSize;
         int length = end - start;
@@ -86,6 +93,7 @@ final class Shapes {
             offset = Arrays.copyOf(offset, n);
             material = Arrays.copyOf(material, n);
             scale = Arrays.copyOf(scale, n);
+            toEntity = Arrays.copyOf(toEntity, n * 12);
         }
         return s;
     }

@@ -117,7 +117,23 @@ final class Tracer {
         double kr = mat[m + Materials.REFLECTIVITY];
         double local = 1 - kt;
         if (local != 0) {
-            phong.shade(m, px, py, pz, nx, ny, nz, -dx, -dy, -dz, delta, colour);
+            double cr = mat[m + Materials.R], cg = mat[m + Materials.G], cb = mat[m + Materials.B];
+            if (mat[m + Materials.TEXTURE] != Materials.PLAIN) {
+                // Just inside the solid (against the outward normal g), so a face on a cell boundary takes the inside cell.
+                int t = s * 12;
+                double[] e = shapes.toEntity;
+                double qx = px - delta * gx, qy = py - delta * gy, qz = pz - delta * gz;
+                double ex = e[t] * qx + e[t + 1] * qy + e[t + 2] * qz + e[t + 3];
+                double ey = e[t + 4] * qx + e[t + 5] * qy + e[t + 6] * qz + e[t + 7];
+                double ez = e[t + 8] * qx + e[t + 9] * qy + e[t + 10] * qz + e[t + 11];
+                double k = mat[m + Materials.TSCALE];
+                boolean even = ((long) Math.floor(ex / k) + (long) Math.floor(ey / k) + (long) Math.floor(ez / k) & 1) == 0;
+                int c = m + (even ? Materials.T1R : Materials.T2R);
+                cr = mat[c];
+                cg = mat[c + 1];
+                cb = mat[c + 2];
+            }
+            phong.shade(m, cr, cg, cb, px, py, pz, nx, ny, nz, -dx, -dy, -dz, delta, colour);
             accR += wr * local * colour[0];
             accG += wg * local * colour[1];
             accB += wb * local * colour[2];

@@ -54,6 +54,17 @@ class LightMaterialAttributesTest {
     }
 
     @Test
+    void aMaterialsColorMayBeACheckerTexture() {
+        Scene s = Scripts.scene(CAMERA + "Scene { Sphere { material -> Material { color -> Checker { color1 -> rgb(1, 0, 0)"
+                + " scale -> 0.5 } } } }\n");
+        Material m = ((dev.crt.scene.Sphere) s.entities().get(0)).material();
+        assertThat(m.texture()).isEqualTo(new dev.crt.scene.Checker(new Rgb(1, 0, 0), Rgb.BLACK, 0.5));
+        at(error("m = Material { color -> 5 }\n"), 1, 16, "attribute 'color' of Material expects an rgb colour or a texture, got number");
+        at(error("c = Checker { scale -> 0 }\n"), 1, 15, "scale must be > 0, got 0");
+        at(error("c = Checker { color1 -> Checker { } }\n"), 1, 15, "attribute 'color1' of Checker expects an rgb colour, got texture");
+    }
+
+    @Test
     void cameraTakesAProjection() {
         Scene s = Scripts.scene("Settings { camera -> Camera { position -> vec3(0,0,-5) pointing -> vec3(0,0,0)"
                 + " projection -> \"spherical\" } }\nScene { Sphere { } }\n");

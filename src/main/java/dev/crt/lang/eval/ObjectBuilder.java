@@ -10,11 +10,13 @@ import dev.crt.lang.value.EntityValue;
 import dev.crt.lang.value.LightValue;
 import dev.crt.lang.value.MaterialValue;
 import dev.crt.lang.value.NumberValue;
+import dev.crt.lang.value.TextureValue;
 import dev.crt.lang.value.Value;
 import dev.crt.scene.ApertureShape;
 import dev.crt.scene.AreaLight;
 import dev.crt.scene.Background;
 import dev.crt.scene.Box;
+import dev.crt.scene.Checker;
 import dev.crt.scene.Camera;
 import dev.crt.scene.Cone;
 import dev.crt.scene.Cylinder;
@@ -27,6 +29,7 @@ import dev.crt.scene.Projection;
 import dev.crt.scene.Rgb;
 import dev.crt.scene.SolidBackground;
 import dev.crt.scene.SpotLight;
+import dev.crt.scene.Texture;
 import dev.crt.scene.Torus;
 import dev.crt.scene.SourceSpan;
 import dev.crt.scene.Sphere;
@@ -54,6 +57,7 @@ final class ObjectBuilder {
         type("AreaLight", ObjectBuilder::areaLight, "corner", "edge1", "edge2", "samples", "color", "falloff", "ambient");
         type("Material", ObjectBuilder::material, "color", "diffuse", "specular", "shininess", "reflectivity",
                 "transparency", "ior", "emission", "fresnel", "absorption");
+        type("Checker", ObjectBuilder::checker, "color1", "color2", "scale");
         type("Sphere", ObjectBuilder::sphere, "center", "radius", "material");
         type("Box", ObjectBuilder::box, "cornerA", "cornerB", "material");
         type("Plane", ObjectBuilder::plane, "normal", "position", "material");
@@ -96,10 +100,10 @@ final class ObjectBuilder {
             SourceSpan typeSpan, SourceSpan objectSpan) {
         Attributes a = new Attributes(evaluator, typeName, typeSpan, objectSpan);
         for (CRTParser.AttributeContext attr : written) {
-            String name = attr.IDENT().getText();
+            String name = attr.key.getText();
             SourceSpan at = evaluator.span(attr);
             // A wrong name is the name's fault alone: underline just it, as the reference's example does.
-            SourceSpan nameSpan = evaluator.span(attr.IDENT().getSymbol());
+            SourceSpan nameSpan = evaluator.span(attr.key);
             if (!known.contains(name)) {
                 a.markFailed();
                 evaluator.report(evaluator.error("unknown attribute '" + name + "' for " + typeName
@@ -205,10 +209,16 @@ final class ObjectBuilder {
                 a.number("falloff", 0, Range.NOT_NEGATIVE), a.number("ambient", 0, Range.NOT_NEGATIVE), a.typeSpan()));
     }
 
+    private Value checker(Attributes a) {
+        return new TextureValue(new Checker(a.color("color1", Rgb.WHITE), a.color("color2", Rgb.BLACK),
+                a.number("scale", 1, Range.POSITIVE)));
+    }
+
     private Value material(Attributes a) {
         Material d = Material.DEFAULT;
+        Texture texture = a.texture("color");
         return new MaterialValue(new Material(
-                a.color("color", d.color()),
+                texture != null ? d.color() : a.color("color", d.color()),
                 a.number("diffuse", d.diffuse(), Range.ANY),
                 a.number("specular", d.specular(), Range.ANY),
                 a.number("shininess", d.shininess(), Range.ANY),
@@ -218,7 +228,8 @@ final class ObjectBuilder {
                 a.color("emission", d.emission()),
                 a.has("diffuse"),
                 a.bool("fresnel", false),
-                absorption(a)));
+                absorption(a),
+                texture));
     }
 
     private static Rgb absorption(Attributes a) {
