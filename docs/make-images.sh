@@ -10,3 +10,13 @@ crt="$root/crt"
 "$crt" render "$root/scenes/scene-2015.crt" -o "$images/scene-2015-crt.png" -q
 "$crt" render "$root/scenes/scene-2015.crt" --shading original -o "$images/scene-2015-original.png" -q
 echo "docs/make-images.sh: wrote $images/scene-2015-crt.png and scene-2015-original.png"
+
+# rendering.md, "Spot lights, area lights, Fresnel glass, absorption, 360° cameras": the still
+# life, and the same scene as a spherical panorama from the middle of the table.
+"$crt" render "$root/scenes/still-life.crt" --supersampling 2 -o "$images/still-life.png" -q
+spherical="$(mktemp --suffix=.crt)"
+trap 'rm -f "$spherical"' EXIT
+sed 's/camera -> Camera { position -> vec3(0, 3.2, -7) pointing -> vec3(0, 0.8, 0) fov -> 42 }/camera -> Camera { position -> vec3(0, 1.6, -1.2) pointing -> vec3(0, 1.6, 3) fov -> 60 projection -> "spherical" }/' \
+  "$root/scenes/still-life.crt" > "$spherical"
+"$crt" render "$spherical" --width 720 --height 360 -o "$images/still-life-spherical.png" -q
+echo "docs/make-images.sh: wrote $images/still-life.png and still-life-spherical.png"

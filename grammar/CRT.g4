@@ -17,7 +17,7 @@ ifChain : IF '(' expression ')' block (ELSE (ifChain | block))? ;
 
 block : '{' statement* '}' ;
 
-attribute : IDENT '->' expression ;
+attribute : key=(IDENT | SCALE | ROTATE | TRANSLATE) '->' expression ;   // an attribute may be named like a modifier (a texture's scale)
 
 // Level 12 of the precedence table; only a plain identifier may be assigned.
 expression

@@ -78,6 +78,31 @@ public final class Transform {
         return new Transform(m, inv);
     }
 
+    /**
+     * The map p ↦ p.x·cx + p.y·cy + p.z·cz + t, for columns that span space (a shape's own frame);
+     * its inverse by cross products.
+     */
+    public static Transform frame(Vec3 cx, Vec3 cy, Vec3 cz, Vec3 t) {
+        double det = cx.dot(cy.cross(cz));
+        if (!(det != 0) || !Double.isFinite(det)) throw new IllegalArgumentException("the columns of a frame must span space");
+        Vec3 r0 = cy.cross(cz).div(det), r1 = cz.cross(cx).div(det), r2 = cx.cross(cy).div(det);
+        double[] m = {cx.x(), cy.x(), cz.x(), t.x(), cx.y(), cy.y(), cz.y(), t.y(), cx.z(), cy.z(), cz.z(), t.z()};
+        double[] inv = {r0.x(), r0.y(), r0.z(), -r0.dot(t), r1.x(), r1.y(), r1.z(), -r1.dot(t),
+                r2.x(), r2.y(), r2.z(), -r2.dot(t)};
+        return new Transform(m, inv);
+    }
+
+    /**
+     * An orthonormal frame whose third axis is the unit vector {@code w}: the first axis is
+     * perpendicular to w, built from the world axis least aligned with it.
+     */
+    public static Vec3[] axes(Vec3 w) {
+        Vec3 a = Math.abs(w.x()) <= Math.abs(w.y()) && Math.abs(w.x()) <= Math.abs(w.z()) ? Vec3.X
+                : Math.abs(w.y()) <= Math.abs(w.z()) ? Vec3.Y : Vec3.Z;
+        Vec3 u = a.cross(w).normalize();
+        return new Vec3[] {u, w.cross(u), w};
+    }
+
     /** The transform that applies this one first, then {@code after}. */
     public Transform then(Transform after) {
         if (this == IDENTITY) return after;

@@ -2,6 +2,7 @@ package dev.crt.render;
 
 import dev.crt.geom.Vec3;
 import dev.crt.scene.Camera;
+import dev.crt.scene.Projection;
 
 /**
  * Primary rays of the camera model of rendering-model.md: forward f, right r = (0,1,0)×f, up
@@ -14,6 +15,7 @@ final class CameraRays {
     final double width, height, halfHeight, aspect;
     final double lensRadius, focalDistance;
     final ApertureSampler aperture;
+    private final Projection projection;
 
     CameraRays(Camera c, int width, int height) {
         Vec3 p = c.position();
@@ -43,7 +45,9 @@ final class CameraRays {
         this.height = height;
         halfHeight = Math.tan(Math.toRadians(c.fov()) / 2);
         aspect = (double) width / height;
-        lensRadius = c.aperture() / 1000;
+        projection = c.projection();
+        // The 360° projections have no single view axis to focus along: they are pinholes.
+        lensRadius = projection == Projection.PERSPECTIVE ? c.aperture() / 1000 : 0;
         focalDistance = c.focalDistance();
         aperture = new ApertureSampler(c.apertureShape());
     }
@@ -52,6 +56,10 @@ final class CameraRays {
 
     /** The pinhole direction through sample (sx, sy) of pixel (i, j), written to {@code d[0..2]}. */
     void direction(int i, int j, double sx, double sy, double[] d) {
+        if (projection != Projection.PERSPECTIVE) {
+            panoramic(i, j, sx, sy, d);
+            return;
+        }
         double x = 2 * (i + sx) / width - 1;
         double y = 1 - 2 * (j + sy) / height;
         double a = x * halfHeight * aspect, b = y * halfHeight;
@@ -60,6 +68,35 @@ final class CameraRays {
         d[0] = dx * inv;
         d[1] = dy * inv;
         d[2] = dz * inv;
+    }
+
+    /**
+     * Spherical: longitude φ = 2π((i + sx)/W − ½), latitude θ = π(½ − (j + sy)/H),
+     * d = cosθ·sinφ·r + sinθ·u + cosθ·cosφ·f. Cylindrical: the same φ, d = normalize(sinφ·r + y·h·u + cosφ·f)
+     * with y and h as for perspective.
+     */
+    private void panoramic(int i, int j, double sx, double sy, double[] d) {
+        double phi = 2 * Math.PI * ((i + sx) / width - 0.5);
+        double sinPhi = Math.sin(phi), cosPhi = Math.cos(phi);
+        double a, b, c;
+        if (projection == Projection.SPHERICAL) {
+            double theta = Math.PI * (0.5 - (j + sy) / height);
+            double cosTheta = Math.cos(theta);
+            a = cosTheta * sinPhi;
+            b = Math.sin(theta);
+            c = cosTheta * cosPhi;
+        } else {
+            a = sinPhi;
+            b = (1 - 2 * (j + sy) / height) * halfHeight;
+            c = cosPhi;
+            double inv = 1 / Math.sqrt(a * a + b * b + c * c);
+            a *= inv;
+            b *= inv;
+            c *= inv;
+        }
+        d[0] = a * rx + b * ux + c * fx;
+        d[1] = a * ry + b * uy + c * fy;
+        d[2] = a * rz + b * uz + c * fz;
     }
 
     /**

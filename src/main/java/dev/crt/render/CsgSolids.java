@@ -252,13 +252,13 @@ final class CsgSolids {
         final int[] stamp;
         int walk;
         final int[] startInside;
-        final double[] eventT;
-        final int[] eventLeaf;
-        final int[] eventFace;
-        final boolean[] eventEntry;
+        double[] eventT;
+        int[] eventLeaf;
+        int[] eventFace;
+        boolean[] eventEntry;
         /** The events by distance (indices into the event arrays), and room for sorting them. */
-        final int[] order, merge;
-        final int[] stack;
+        int[] order, merge;
+        final BvhWalker walker;
         int starts;
 
         Scratch(CsgSolids csg) {
@@ -275,7 +275,22 @@ final class CsgSolids {
             eventEntry = new boolean[2 * n];
             order = new int[2 * n];
             merge = new int[2 * n];
-            stack = new int[Math.max(1, 2 * csg.maxDepth)];
+            walker = new BvhWalker(2 * csg.maxDepth);
+        }
+
+        /**
+         * Makes room for {@code events} events: two per leaf suffice for convex leaves, a torus
+         * or a mesh may cross more often; the arrays grow once and are kept.
+         */
+        void room(int events) {
+            if (events <= eventT.length) return;
+            int n = Math.max(events, 2 * eventT.length);
+            eventT = Arrays.copyOf(eventT, n);
+            eventLeaf = Arrays.copyOf(eventLeaf, n);
+            eventFace = Arrays.copyOf(eventFace, n);
+            eventEntry = Arrays.copyOf(eventEntry, n);
+            order = new int[n];
+            merge = new int[n];
         }
 
         /** Starts a walk: every node reads as empty (all leaves outside) until touched. */
@@ -300,41 +315,27 @@ final class CsgSolids {
             events = gatherLeaf(tree, testLeaf[i], ray, shapes, span, sc, events);
         }
         Bvh h = bvh[tree];
-        if (h == null || !ray.enters(h.root, 0, tMin, tMax)) return events;
-        int[] stack = sc.stack;
-        int top = 0;
-        int node = 0;
+        BvhWalker walk = sc.walker;
+        if (h == null || !walk.start(h, ray, tMin, tMax)) return events;
         int base = bvhStart[tree];
-        while (true) {
-            if (Bvh.isLeaf(node)) {
-                for (int p = Bvh.leafFirst(node), end = p + Bvh.leafCount(node); p < end; p++) {
-                    events = gatherLeaf(tree, bvhLeaf[base + p], ray, shapes, span, sc, events);
-                }
-            } else {
-                int left = h.children[2 * node], right = h.children[2 * node + 1];
-                boolean l = ray.enters(h.box, 12 * node, tMin, tMax), r = ray.enters(h.box, 12 * node + 6, tMin, tMax);
-                if (l) {
-                    if (r) stack[top++] = right;
-                    node = left;
-                    continue;
-                }
-                if (r) {
-                    node = right;
-                    continue;
-                }
+        for (int leaf = walk.nextAny(tMax); leaf != BvhWalker.END; leaf = walk.nextAny(tMax)) {
+            for (int p = Bvh.leafFirst(leaf), end = p + Bvh.leafCount(leaf); p < end; p++) {
+                events = gatherLeaf(tree, bvhLeaf[base + p], ray, shapes, span, sc, events);
             }
-            if (top == 0) return events;
-            node = stack[--top];
         }
+        return events;
     }
 
     /** The events of tree-local leaf {@code k}, inserted among the {@code events} already sorted. */
     private int gatherLeaf(int tree, int k, Ray ray, Shapes shapes, LineSpan span, Scratch sc, int events) {
         sc.leafInside[k] = false;
         if (!shapes.span(leafShape[leafStart[tree] + k], ray, span)) return events;
-        if (span.tIn == Double.NEGATIVE_INFINITY) sc.startInside[sc.starts++] = k;
-        else events = add(sc, events, span.tIn, k, span.faceIn, true);
-        if (span.tOut != Double.POSITIVE_INFINITY) events = add(sc, events, span.tOut, k, span.faceOut, false);
+        sc.room(events + 2 * span.count);
+        for (int i = 0; i < span.count; i++) {
+            if (span.tIn[i] == Double.NEGATIVE_INFINITY) sc.startInside[sc.starts++] = k;
+            else events = add(sc, events, span.tIn[i], k, span.faceIn[i], true);
+            if (span.tOut[i] != Double.POSITIVE_INFINITY) events = add(sc, events, span.tOut[i], k, span.faceOut[i], false);
+        }
         return events;
     }
 

@@ -1,17 +1,22 @@
 package dev.crt.render;
 
+import dev.crt.scene.Checker;
 import dev.crt.scene.Material;
 import java.util.Arrays;
 
 /**
- * The distinct materials of a scene as one flat array, thirteen doubles each. Materials are told
+ * The distinct materials of a scene as one flat array, {@link #STRIDE} doubles each. Materials are told
  * apart by their values, as Material's equals does, through a hash table of indices into the
  * array itself: a scene with a million materials costs no object per material.
  */
 final class Materials {
-    static final int STRIDE = 13;
+    static final int STRIDE = 25;
     static final int R = 0, G = 1, B = 2, DIFFUSE = 3, SPECULAR = 4, SHININESS = 5, REFLECTIVITY = 6,
-            TRANSPARENCY = 7, IOR = 8, ER = 9, EG = 10, EB = 11, ORIGINAL_DIFFUSE = 12;
+            TRANSPARENCY = 7, IOR = 8, ER = 9, EG = 10, EB = 11, ORIGINAL_DIFFUSE = 12, FRESNEL = 13,
+            AR = 14, AG = 15, AB = 16, TEXTURE = 17, T1R = 18, T1G = 19, T1B = 20, T2R = 21, T2G = 22, T2B = 23,
+            TSCALE = 24;
+    /** {@link #TEXTURE} values: a plain colour, or a checkerboard of T1 and T2 with cells TSCALE wide. */
+    static final double PLAIN = 0, CHECKER = 1;
 
     double[] data = new double[STRIDE * 8];
     private int count;
@@ -39,6 +44,21 @@ final class Materials {
         v[EG] = m.emission().g();
         v[EB] = m.emission().b();
         v[ORIGINAL_DIFFUSE] = m.originalDiffuse();
+        v[FRESNEL] = m.fresnel() ? 1 : 0;
+        v[AR] = m.absorption().r();
+        v[AG] = m.absorption().g();
+        v[AB] = m.absorption().b();
+        for (int k = TEXTURE; k < STRIDE; k++) v[k] = 0;
+        if (m.texture() instanceof Checker c) {
+            v[TEXTURE] = CHECKER;
+            v[T1R] = c.color1().r();
+            v[T1G] = c.color1().g();
+            v[T1B] = c.color1().b();
+            v[T2R] = c.color2().r();
+            v[T2G] = c.color2().g();
+            v[T2B] = c.color2().b();
+            v[TSCALE] = c.scale();
+        }
         int mask = table.length - 1;
         int slot = hash(v, 0) & mask;
         int k;
@@ -92,4 +112,12 @@ final class Materials {
     }
 
     double transparency(int m) { return data[m * STRIDE + TRANSPARENCY]; }
+
+    /** Whether some material absorbs light inside its solid (Beer's law). */
+    boolean absorbing() {
+        for (int k = 0; k < count; k++) {
+            if (data[k * STRIDE + AR] != 0 || data[k * STRIDE + AG] != 0 || data[k * STRIDE + AB] != 0) return true;
+        }
+        return false;
+    }
 }

@@ -6,7 +6,8 @@ package dev.crt.render;
  * colour, diffuse with N·L unclamped and kd = 1 − r unless {@code diffuse} is given, specular tinted
  * by the material colour, all-or-nothing shadows, falloff by the whole path length from the camera,
  * and mirror reflection. Refraction and emission, which the 2015 language could not set, are CRT's
- * own terms. One per render thread; it uses its Tracer for the geometry and adds into the Tracer's
+ * own terms, and so are the second wave's spot and area lights (their cone and sample weights
+ * scale each sample's terms). One per render thread; it uses its Tracer for the geometry and adds into the Tracer's
  * accumulator, so the pixel sampler treats both models alike. Scenes in CRT's model never create one.
  */
 final class OriginalShading {
@@ -20,6 +21,7 @@ final class OriginalShading {
     private final BackgroundShader background;
     private final SurfacePoint surface = new SurfacePoint();
     private final double[] colour = new double[3];
+    private final LightSample sample = new LightSample();
     /** What {@link #nearest} travelled before the ray it left in the tracer: back-facing planes passed through. */
     private double skipped;
 
@@ -111,41 +113,38 @@ final class OriginalShading {
         double r = mat[m + Materials.ER] + l.ambientR * unreflected;
         double g = mat[m + Materials.EG] + l.ambientG * unreflected;
         double b = mat[m + Materials.EB] + l.ambientB * unreflected;
+        LightSample ls = sample;
         for (int i = 0; i < l.count; i++) {
-            double wx, wy, wz, reach, isl;
-            if (l.parallel[i]) {
-                wx = l.x[i];
-                wy = l.y[i];
-                wz = l.z[i];
-                reach = PARALLEL_SHADOW_REACH;
-                isl = 1;
-            } else {
-                wx = l.x[i] - px;
-                wy = l.y[i] - py;
-                wz = l.z[i] - pz;
-                double dist = Math.sqrt(wx * wx + wy * wy + wz * wz);
-                if (dist == 0) continue;
-                wx /= dist;
-                wy /= dist;
-                wz /= dist;
-                double margin = Math.max(delta, Tracer.OFFSET * Math.max(Math.max(Math.abs(l.x[i]), Math.abs(l.y[i])), Math.abs(l.z[i])));
-                reach = dist - margin;
-                double far = dist + path;
-                isl = l.falloff[i] > 0 ? l.falloff[i] / (far * far) : 1;
+            for (int k = 0, samples = l.sampleCount(i); k < samples; k++) {
+                l.sample(i, k, px, py, pz, tracer.lightRandom, ls);
+                if (ls.weight == 0) continue;
+                double wx = ls.wx, wy = ls.wy, wz = ls.wz, reach, isl;
+                if (!ls.finite) {
+                    reach = PARALLEL_SHADOW_REACH;
+                    isl = 1;
+                } else {
+                    double dist = ls.dist;
+                    if (dist == 0) continue;
+                    double margin = Math.max(delta, Tracer.OFFSET * Math.max(Math.max(Math.abs(ls.tx), Math.abs(ls.ty)), Math.abs(ls.tz)));
+                    reach = dist - margin;
+                    double far = dist + path;
+                    isl = ls.falloff > 0 ? ls.falloff / (far * far) : 1;
+                }
+                isl *= ls.weight;
+                // The shadow ray leaves along itself, so the surface it starts on is never between the point and the light.
+                tracer.shadowRays++;
+                if (reach > delta && nearest(px + delta * wx, py + delta * wy, pz + delta * wz, wx, wy, wz, reach - delta)) continue;
+                double nw = nx * wx + ny * wy + nz * wz;
+                double diffuse = kd * nw * isl;
+                double specular = 0;
+                if (ks > 0) {
+                    double rv = 2 * nw * (nx * vx + ny * vy + nz * vz) - (wx * vx + wy * vy + wz * vz);
+                    if (rv > 0) specular = ks * Tracer.power(rv, shininess) * isl;
+                }
+                r += l.r[i] * cr * (diffuse + specular);
+                g += l.g[i] * cg * (diffuse + specular);
+                b += l.b[i] * cb * (diffuse + specular);
             }
-            // The shadow ray leaves along itself, so the surface it starts on is never between the point and the light.
-            tracer.shadowRays++;
-            if (reach > delta && nearest(px + delta * wx, py + delta * wy, pz + delta * wz, wx, wy, wz, reach - delta)) continue;
-            double nw = nx * wx + ny * wy + nz * wz;
-            double diffuse = kd * nw * isl;
-            double specular = 0;
-            if (ks > 0) {
-                double rv = 2 * nw * (nx * vx + ny * vy + nz * vz) - (wx * vx + wy * vy + wz * vz);
-                if (rv > 0) specular = ks * Tracer.power(rv, shininess) * isl;
-            }
-            r += l.r[i] * cr * (diffuse + specular);
-            g += l.g[i] * cg * (diffuse + specular);
-            b += l.b[i] * cb * (diffuse + specular);
         }
         colour[0] = r;
         colour[1] = g;

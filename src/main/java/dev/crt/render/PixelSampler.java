@@ -81,6 +81,7 @@ final class PixelSampler {
         t.accR = 0;
         t.accG = 0;
         t.accB = 0;
+        t.startPixel(i, j, seed, 0);
         switch (kind) {
             case GRID -> grid(i, j);
             case JITTERED -> jittered(i, j);
@@ -245,6 +246,7 @@ final class PixelSampler {
         t.accR = 0;
         t.accG = 0;
         t.accB = 0;
+        t.startPixel(i, j, seed, 1);
         long h = PixelRandom.pixelHash(i, j, seed);
         for (int k = pilotCount; k < n; k++) {
             if ((k & STOP_RUN) == STOP_RUN && stop.getAsBoolean()) break;

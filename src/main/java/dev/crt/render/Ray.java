@@ -10,6 +10,8 @@ final class Ray {
     double ix, iy, iz;
     /** Offsets (0 or 3) of the near slab plane per axis in a node's min/max box, by direction sign. */
     int nearX, nearY, nearZ;
+    /** The ray in a shape's own coordinates, written by {@link #toLocal} (t keeps its meaning: the map is affine). */
+    double lox, loy, loz, ldx, ldy, ldz;
 
     void set(double ox, double oy, double oz, double dx, double dy, double dz) {
         this.ox = ox;
@@ -50,5 +52,15 @@ final class Ray {
     /** Whether the line passes through the box at {@code k} in {@code b} for some tMin ≤ t ≤ tMax. */
     boolean enters(double[] b, int k, double tMin, double tMax) {
         return entry(b, k, tMin, tMax) != Double.POSITIVE_INFINITY;
+    }
+
+    /** Maps the ray by the affine world-to-local matrix (3×4, row-major) at {@code o} in {@code a}. */
+    void toLocal(double[] a, int o) {
+        lox = a[o] * ox + a[o + 1] * oy + a[o + 2] * oz + a[o + 3];
+        loy = a[o + 4] * ox + a[o + 5] * oy + a[o + 6] * oz + a[o + 7];
+        loz = a[o + 8] * ox + a[o + 9] * oy + a[o + 10] * oz + a[o + 11];
+        ldx = a[o] * dx + a[o + 1] * dy + a[o + 2] * dz;
+        ldy = a[o + 4] * dx + a[o + 5] * dy + a[o + 6] * dz;
+        ldz = a[o + 8] * dx + a[o + 9] * dy + a[o + 10] * dz;
     }
 }

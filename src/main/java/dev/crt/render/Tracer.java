@@ -29,8 +29,6 @@ final class Tracer {
     private final int[] items;
     private final int[] unbounded;
     private final Bvh bvh;
-    private final double[] boxes;
-    private final int[] children;
     private final Lights lights;
     private final BackgroundShader background;
 
@@ -39,8 +37,7 @@ final class Tracer {
     final Hit hit = new Hit();
     private final SurfacePoint surface = new SurfacePoint();
     private final CsgSolids.Scratch csgScratch;
-    private final int[] stack;
-    private final double[] stackT;
+    private final BvhWalker walker;
     private final double[] colour = new double[3];
     /**
      * Per light, the last opaque item that blocked it: neighbouring shadow rays usually share their
@@ -48,6 +45,18 @@ final class Tracer {
      * either way, since one opaque crossing makes the shadow factor 0.
      */
     private final int[] lastOccluder;
+
+    private final PhongShading phong;
+    /** The generator of the lights' random choices (area light jitter), seeded per pixel. */
+    final PixelRandom lightRandom = new PixelRandom();
+    /** Keeps the lights' stream apart from the pixel sampler's, which is seeded from the same pixel. */
+    private static final long LIGHT_STREAM = 0x4c69676874734c6cL;
+    /** Whether some material absorbs (Beer's law): only then do rays and shadow rays track distances inside solids. */
+    final boolean absorbing;
+    /** The optical depth a·s per channel gathered by the current shadow ray. */
+    private double depthR, depthG, depthB;
+    /** The Beer's-law factors exp(−a·s) of the last {@link #shadow} ray, when {@link #absorbing}. */
+    double shadowR = 1, shadowG = 1, shadowB = 1;
 
     double accR, accG, accB;
     long primaryRays, shadowRays, reflectedRays, refractedRays;
@@ -60,16 +69,14 @@ final class Tracer {
         this.items = geometry.items;
         this.unbounded = geometry.unbounded;
         this.bvh = geometry.bvh;
-        this.boxes = bvh == null ? null : bvh.box;
-        this.children = bvh == null ? null : bvh.children;
         this.lights = lights;
         this.background = background;
         csgScratch = new CsgSolids.Scratch(csg);
         lastOccluder = new int[lights.count];
         java.util.Arrays.fill(lastOccluder, NONE);
-        int depth = bvh == null ? 1 : bvh.depth + 2;
-        stack = new int[depth];
-        stackT = new double[depth];
+        walker = new BvhWalker(bvh == null ? 1 : bvh.depth + 2);
+        absorbing = geometry.materials.absorbing();
+        phong = new PhongShading(this, materials, lights);
     }
 
     Shapes shapes() { return shapes; }
@@ -99,11 +106,34 @@ final class Tracer {
         double delta = OFFSET * Math.max(Math.max(Math.abs(px), Math.abs(py)), Math.max(Math.abs(pz), shapes.scale[s]));
         int m = shapes.material[s] * Materials.STRIDE;
         double[] mat = materials;
+        if (!entering && absorbing) {
+            // The segment just travelled lay inside this surface's solid: Beer's law over its length.
+            double t = hit.t;
+            wr *= Math.exp(-mat[m + Materials.AR] * t);
+            wg *= Math.exp(-mat[m + Materials.AG] * t);
+            wb *= Math.exp(-mat[m + Materials.AB] * t);
+        }
         double kt = mat[m + Materials.TRANSPARENCY];
         double kr = mat[m + Materials.REFLECTIVITY];
         double local = 1 - kt;
         if (local != 0) {
-            shadeLocal(m, px, py, pz, nx, ny, nz, -dx, -dy, -dz, delta);
+            double cr = mat[m + Materials.R], cg = mat[m + Materials.G], cb = mat[m + Materials.B];
+            if (mat[m + Materials.TEXTURE] != Materials.PLAIN) {
+                // Just inside the solid (against the outward normal g), so a face on a cell boundary takes the inside cell.
+                int t = s * 12;
+                double[] e = shapes.toEntity;
+                double qx = px - delta * gx, qy = py - delta * gy, qz = pz - delta * gz;
+                double ex = e[t] * qx + e[t + 1] * qy + e[t + 2] * qz + e[t + 3];
+                double ey = e[t + 4] * qx + e[t + 5] * qy + e[t + 6] * qz + e[t + 7];
+                double ez = e[t + 8] * qx + e[t + 9] * qy + e[t + 10] * qz + e[t + 11];
+                double k = mat[m + Materials.TSCALE];
+                boolean even = ((long) Math.floor(ex / k) + (long) Math.floor(ey / k) + (long) Math.floor(ez / k) & 1) == 0;
+                int c = m + (even ? Materials.T1R : Materials.T2R);
+                cr = mat[c];
+                cg = mat[c + 1];
+                cb = mat[c + 2];
+            }
+            phong.shade(m, cr, cg, cb, px, py, pz, nx, ny, nz, -dx, -dy, -dz, delta, colour);
             accR += wr * local * colour[0];
             accG += wg * local * colour[1];
             accB += wb * local * colour[2];
@@ -111,6 +141,11 @@ final class Tracer {
         if (depth == 0) return;
         double dDotN = dx * nx + dy * ny + dz * nz;
         double rdx = dx - 2 * dDotN * nx, rdy = dy - 2 * dDotN * ny, rdz = dz - 2 * dDotN * nz;
+        if (kt > 0 && mat[m + Materials.FRESNEL] != 0) {
+            fresnel(px, py, pz, dx, dy, dz, nx, ny, nz, rdx, rdy, rdz, entering, delta, depth, kr, kt, mat[m + Materials.IOR],
+                    wr, wg, wb);
+            return;
+        }
         if (kr > 0) {
             reflectedRays++;
             trace(px + delta * nx, py + delta * ny, pz + delta * nz, rdx, rdy, rdz, depth - 1, wr * kr, wg * kr, wb * kr);
@@ -131,69 +166,76 @@ final class Tracer {
     }
 
     /**
-     * E + Σℓ aℓ(Cℓ⊙C) + Sℓ·Aℓ·(kd·max(0,N·ω)(Cℓ⊙C) + ks·max(0,R·V)^n·Cℓ) into {@code colour}. A light
-     * whose diffuse and specular terms are both zero here casts no shadow ray.
+     * The reflected and refracted terms of a {@code fresnel -> true} material:
+     * kt·(Fr·trace(reflected) + (1 − Fr)·trace(refracted)) + kr·trace(reflected), Fr = 1 under total
+     * internal reflection; the two reflected terms share one ray.
      */
-    private void shadeLocal(int m, double px, double py, double pz, double nx, double ny, double nz,
-            double vx, double vy, double vz, double delta) {
-        double[] mat = materials;
-        double cr = mat[m + Materials.R], cg = mat[m + Materials.G], cb = mat[m + Materials.B];
-        double kd = mat[m + Materials.DIFFUSE], ks = mat[m + Materials.SPECULAR];
-        double shininess = mat[m + Materials.SHININESS];
-        double r = mat[m + Materials.ER] + lights.ambientR * cr;
-        double g = mat[m + Materials.EG] + lights.ambientG * cg;
-        double b = mat[m + Materials.EB] + lights.ambientB * cb;
-        double nv = nx * vx + ny * vy + nz * vz;
-        Lights l = lights;
-        for (int i = 0; i < l.count; i++) {
-            double wx, wy, wz, dist, att;
-            if (l.parallel[i]) {
-                wx = l.x[i];
-                wy = l.y[i];
-                wz = l.z[i];
-                dist = Double.POSITIVE_INFINITY;
-                att = 1;
-            } else {
-                wx = l.x[i] - px;
-                wy = l.y[i] - py;
-                wz = l.z[i] - pz;
-                double d2 = wx * wx + wy * wy + wz * wz;
-                dist = Math.sqrt(d2);
-                wx /= dist;
-                wy /= dist;
-                wz /= dist;
-                att = l.falloff[i] > 0 ? l.falloff[i] / d2 : 1;
-            }
-            double nw = nx * wx + ny * wy + nz * wz;
-            double diffuse = nw > 0 ? kd * nw : 0;
-            double specular = 0;
-            if (ks != 0) {
-                double rv = 2 * nw * nv - (wx * vx + wy * vy + wz * vz);
-                if (rv > 0) specular = ks * power(rv, shininess);
-            }
-            if (diffuse == 0 && specular == 0) continue;
-            double side = nw > 0 ? delta : -delta;
-            double ox = px + side * nx, oy = py + side * ny, oz = pz + side * nz;
-            double s;
-            if (l.parallel[i]) {
-                s = transmittance(ox, oy, oz, wx, wy, wz, dist, i);
-            } else {
-                // Aimed from the moved origin at the light itself and stopped short of it by the same
-                // relative margin, so a light lying on a surface is not shadowed by that surface.
-                double sx = l.x[i] - ox, sy = l.y[i] - oy, sz = l.z[i] - oz;
-                double reach = Math.sqrt(sx * sx + sy * sy + sz * sz);
-                double margin = Math.max(delta, OFFSET * Math.max(Math.max(Math.abs(l.x[i]), Math.abs(l.y[i])), Math.abs(l.z[i])));
-                s = reach > margin ? transmittance(ox, oy, oz, sx / reach, sy / reach, sz / reach, reach - margin, i) : 1;
-            }
-            if (s == 0) continue;
-            double f = s * att;
-            r += f * (diffuse * l.r[i] * cr + specular * l.r[i]);
-            g += f * (diffuse * l.g[i] * cg + specular * l.g[i]);
-            b += f * (diffuse * l.b[i] * cb + specular * l.b[i]);
+    private void fresnel(double px, double py, double pz, double dx, double dy, double dz, double nx, double ny, double nz,
+            double rdx, double rdy, double rdz, boolean entering, double delta, int depth, double kr, double kt, double ior,
+            double wr, double wg, double wb) {
+        double eta = entering ? 1 / ior : ior;
+        double cosI = -(dx * nx + dy * ny + dz * nz);
+        double k = 1 - eta * eta * (1 - cosI * cosI);
+        double cosT = k < 0 ? 0 : Math.sqrt(k);
+        double fr = k < 0 ? 1 : Fresnel.reflectance(cosI, cosT, eta);
+        double reflect = kr + kt * fr, refract = kt * (1 - fr);
+        if (reflect > 0) {
+            reflectedRays++;
+            trace(px + delta * nx, py + delta * ny, pz + delta * nz, rdx, rdy, rdz, depth - 1,
+                    wr * reflect, wg * reflect, wb * reflect);
         }
-        colour[0] = r;
-        colour[1] = g;
-        colour[2] = b;
+        if (refract > 0) {
+            refractedRays++;
+            double c = eta * cosI - cosT;
+            trace(px - delta * nx, py - delta * ny, pz - delta * nz, eta * dx + c * nx, eta * dy + c * ny, eta * dz + c * nz,
+                    depth - 1, wr * refract, wg * refract, wb * refract);
+        }
+    }
+
+    /**
+     * The shadow factor Sℓ of light sample {@code ls} seen from p: the shadow ray leaves p moved by
+     * {@code side} along n (to the side the light is on) and is aimed at the sample's point, stopped
+     * short of it by the same relative margin, so a light lying on a surface is not shadowed by that
+     * surface. With absorbing materials in the scene, {@link #shadowR}, G, B hold the ray's
+     * Beer's-law factors.
+     */
+    double shadow(LightSample ls, double px, double py, double pz, double nx, double ny, double nz, double side, int light) {
+        double ox = px + side * nx, oy = py + side * ny, oz = pz + side * nz;
+        if (ls.finite) return shadowTo(ox, oy, oz, ls.tx, ls.ty, ls.tz, side, light);
+        if (absorbing) {
+            depthR = 0;
+            depthG = 0;
+            depthB = 0;
+        }
+        double s = transmittance(ox, oy, oz, ls.wx, ls.wy, ls.wz, Double.POSITIVE_INFINITY, light);
+        if (absorbing) absorbed();
+        return s;
+    }
+
+    /** The shadow factor of the segment from o (already moved off the surface by {@code side}) to the light point q. */
+    double shadowTo(double ox, double oy, double oz, double qx, double qy, double qz, double side, int light) {
+        if (absorbing) {
+            depthR = 0;
+            depthG = 0;
+            depthB = 0;
+        }
+        double sx = qx - ox, sy = qy - oy, sz = qz - oz;
+        double reach = Math.sqrt(sx * sx + sy * sy + sz * sz);
+        double margin = Math.max(Math.abs(side), OFFSET * Math.max(Math.max(Math.abs(qx), Math.abs(qy)), Math.abs(qz)));
+        double s = reach > margin ? transmittance(ox, oy, oz, sx / reach, sy / reach, sz / reach, reach - margin, light) : 1;
+        if (absorbing) absorbed();
+        return s;
+    }
+
+    private void absorbed() {
+        shadowR = Math.exp(-depthR);
+        shadowG = Math.exp(-depthG);
+        shadowB = Math.exp(-depthB);
+    }
+
+    /** Seeds the light generator for pixel (i, j) and pass {@code pass}, when some light needs one. */
+    void startPixel(int i, int j, long seed, int pass) {
+        if (lights.random) lightRandom.seed(i, j, seed ^ (LIGHT_STREAM + pass));
     }
 
     /**
@@ -231,69 +273,42 @@ final class Tracer {
             }
             return found;
         }
-        if (ray.entry(bvh.root, 0, 0, tMax) == Double.POSITIVE_INFINITY) return found;
-        double[] boxes = this.boxes;
-        int[] children = this.children;
-        int top = 0;
-        int node = 0;
-        while (true) {
-            if (Bvh.isLeaf(node)) {
-                for (int k = Bvh.leafFirst(node), end = k + Bvh.leafCount(node); k < end; k++) {
-                    if (hitItem(items[k], tMax)) {
-                        found = true;
-                        tMax = hit.t;
-                    }
-                }
-            } else {
-                int left = children[2 * node], right = children[2 * node + 1];
-                double tl = ray.entry(boxes, 12 * node, 0, tMax), tr = ray.entry(boxes, 12 * node + 6, 0, tMax);
-                if (tl != Double.POSITIVE_INFINITY) {
-                    if (tr != Double.POSITIVE_INFINITY) {
-                        if (tl <= tr) {
-                            stack[top] = right;
-                            stackT[top++] = tr;
-                            node = left;
-                        } else {
-                            stack[top] = left;
-                            stackT[top++] = tl;
-                            node = right;
-                        }
-                    } else {
-                        node = left;
-                    }
-                    continue;
-                } else if (tr != Double.POSITIVE_INFINITY) {
-                    node = right;
-                    continue;
+        BvhWalker walk = walker;
+        if (!walk.start(bvh, ray, 0, tMax)) return found;
+        for (int leaf = walk.nextNearest(tMax); leaf != BvhWalker.END; leaf = walk.nextNearest(tMax)) {
+            for (int k = Bvh.leafFirst(leaf), end = k + Bvh.leafCount(leaf); k < end; k++) {
+                if (hitItem(items[k], tMax)) {
+                    found = true;
+                    tMax = hit.t;
                 }
             }
-            do {
-                if (top == 0) return found;
-                node = stack[--top];
-            } while (stackT[top] >= tMax);
         }
+        return found;
     }
 
     private boolean hitItem(int item, double tMax) {
         if (item < 0) return csg.closestHit(-item - 1, ray, tMax, shapes, geometry.materials, span, csgScratch, hit);
         if (!shapes.span(item, ray, span)) return false;
-        double t;
-        int face;
-        if (span.tIn > 0) {
-            t = span.tIn;
-            face = span.faceIn;
-        } else if (span.tOut > 0) {
-            t = span.tOut;
-            face = span.faceOut;
-        } else {
-            return false;
+        for (int i = 0; i < span.count; i++) {
+            double t;
+            int face;
+            if (span.tIn[i] > 0) {
+                t = span.tIn[i];
+                face = span.faceIn[i];
+            } else if (span.tOut[i] > 0) {
+                t = span.tOut[i];
+                face = span.faceOut[i];
+            } else {
+                continue;
+            }
+            if (!(t < tMax)) return false;
+            hit.t = t;
+            hit.shape = item;
+            hit.face = face;
+            hit.flip = false;
+            return true;
         }
-        if (!(t < tMax)) return false;
-        hit.t = t;
-        hit.shape = item;
-        hit.face = face;
-        hit.flip = false;
-        return true;
+        return false;
     }
 
     /**
@@ -317,32 +332,27 @@ final class Tracer {
             }
             return product;
         }
-        if (ray.entry(bvh.root, 0, 0, tMax) == Double.POSITIVE_INFINITY) return product;
-        double[] boxes = this.boxes;
-        int[] children = this.children;
-        int top = 0;
-        int node = 0;
-        while (true) {
-            if (Bvh.isLeaf(node)) {
-                for (int k = Bvh.leafFirst(node), end = k + Bvh.leafCount(node); k < end; k++) {
-                    product *= itemTransmittance(items[k], tMax);
-                    if (product == 0) return blockedBy(light, items[k]);
-                }
-            } else {
-                boolean hl = ray.enters(boxes, 12 * node, 0, tMax);
-                boolean hr = ray.enters(boxes, 12 * node + 6, 0, tMax);
-                if (hl) {
-                    if (hr) stack[top++] = children[2 * node + 1];
-                    node = children[2 * node];
-                    continue;
-                } else if (hr) {
-                    node = children[2 * node + 1];
-                    continue;
-                }
+        BvhWalker walk = walker;
+        if (!walk.start(bvh, ray, 0, tMax)) return product;
+        for (int leaf = walk.nextAny(tMax); leaf != BvhWalker.END; leaf = walk.nextAny(tMax)) {
+            for (int k = Bvh.leafFirst(leaf), end = k + Bvh.leafCount(leaf); k < end; k++) {
+                product *= itemTransmittance(items[k], tMax);
+                if (product == 0) return blockedBy(light, items[k]);
             }
-            if (top == 0) return product;
-            node = stack[--top];
         }
+        return product;
+    }
+
+    /** Adds the optical depth of the segment's stretches inside the solid of {@link #span}, of material m. */
+    private void absorb(int m, double tMax) {
+        double inside = 0;
+        for (int i = 0; i < span.count; i++) {
+            double a = Math.max(span.tIn[i], 0), b = Math.min(span.tOut[i], tMax);
+            if (b > a) inside += b - a;
+        }
+        depthR += materials[m + Materials.AR] * inside;
+        depthG += materials[m + Materials.AG] * inside;
+        depthB += materials[m + Materials.AB] * inside;
     }
 
     private double blockedBy(int light, int item) {
@@ -355,10 +365,17 @@ final class Tracer {
             return csg.transmittance(-item - 1, ray, tMax, shapes, geometry.materials, span, csgScratch);
         }
         if (!shapes.span(item, ray, span)) return 1;
-        boolean in = span.tIn > 0 && span.tIn < tMax;
-        boolean out = span.tOut > 0 && span.tOut < tMax;
-        if (!in && !out) return 1;
-        double kt = materials[shapes.material[item] * Materials.STRIDE + Materials.TRANSPARENCY];
-        return in && out ? kt * kt : kt;
+        int crossings = 0;
+        for (int i = 0; i < span.count; i++) {
+            if (span.tIn[i] > 0 && span.tIn[i] < tMax) crossings++;
+            if (span.tOut[i] > 0 && span.tOut[i] < tMax && !span.surface) crossings++;
+        }
+        if (crossings == 0) return 1;
+        int m = shapes.material[item] * Materials.STRIDE;
+        double kt = materials[m + Materials.TRANSPARENCY];
+        if (absorbing && kt != 0 && !span.surface) absorb(m, tMax);
+        double product = kt;
+        for (int k = 1; k < crossings; k++) product *= kt;
+        return product;
     }
 }

@@ -1,6 +1,10 @@
 package dev.crt.scene;
 
-/** How a surface shades: Phong terms, mirror reflection, transparency with refraction, emission. */
+/**
+ * How a surface shades: Phong terms, mirror reflection, transparency with refraction, emission,
+ * and (second wave) Fresnel weights for reflection and refraction, Beer's-law absorption inside, and
+ * a {@code texture} (or null) that replaces {@code color}.
+ */
 public record Material(
         Rgb color,
         double diffuse,
@@ -10,7 +14,23 @@ public record Material(
         double transparency,
         double ior,
         Rgb emission,
-        boolean diffuseGiven) {
+        boolean diffuseGiven,
+        boolean fresnel,
+        Rgb absorption,
+        Texture texture) {
+
+    /** A material of one plain colour. */
+    public Material(Rgb color, double diffuse, double specular, double shininess, double reflectivity,
+            double transparency, double ior, Rgb emission, boolean diffuseGiven, boolean fresnel, Rgb absorption) {
+        this(color, diffuse, specular, shininess, reflectivity, transparency, ior, emission, diffuseGiven, fresnel,
+                absorption, null);
+    }
+
+    /** A material of wave 1's attributes, without Fresnel weights or absorption. */
+    public Material(Rgb color, double diffuse, double specular, double shininess, double reflectivity,
+            double transparency, double ior, Rgb emission, boolean diffuseGiven) {
+        this(color, diffuse, specular, shininess, reflectivity, transparency, ior, emission, diffuseGiven, false, Rgb.BLACK);
+    }
 
     /**
      * A material whose {@code diffuse} counts as given: the 2015 model then uses it as it is, where

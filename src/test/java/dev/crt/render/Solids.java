@@ -3,10 +3,13 @@ package dev.crt.render;
 import dev.crt.geom.Transform;
 import dev.crt.geom.Vec3;
 import dev.crt.scene.Box;
+import dev.crt.scene.Cone;
+import dev.crt.scene.Cylinder;
 import dev.crt.scene.Csg;
 import dev.crt.scene.Entity;
 import dev.crt.scene.Plane;
 import dev.crt.scene.Sphere;
+import dev.crt.scene.Torus;
 
 /**
  * The inside test of every entity written directly from its definition (point mapped back through
@@ -23,6 +26,16 @@ final class Solids {
                     && q.z() >= b.min().z() && q.z() <= b.max().z();
         }
         if (e instanceof Plane pl) return pl.normal().dot(q.minus(pl.position())) <= 0;
+        if (e instanceof Torus t) {
+            // (ρ − R)² + h² ≤ r² with h the height along the axis and ρ the distance from it.
+            Vec3 v = q.minus(t.center());
+            Vec3 a = t.axis().normalize();
+            double h = v.dot(a);
+            double rho = Math.sqrt(Math.max(0, v.dot(v) - h * h));
+            return (rho - t.major()) * (rho - t.major()) + h * h <= t.minor() * t.minor();
+        }
+        if (e instanceof Cylinder c) return insideCone(c.from(), c.to(), c.radius(), c.radius(), q);
+        if (e instanceof Cone c) return insideCone(c.from(), c.to(), c.radius(), c.radius2(), q);
         Csg c = (Csg) e;
         boolean a = inside(c.left(), q), b = inside(c.right(), q);
         return switch (c.operation()) {
@@ -30,6 +43,15 @@ final class Solids {
             case INTERSECTION -> a && b;
             case DIFFERENCE -> a && !b;
         };
+    }
+
+    /** Within the radius interpolated at the point's projection on the segment from a to b, by distance to the line. */
+    private static boolean insideCone(Vec3 a, Vec3 b, double r0, double r1, Vec3 q) {
+        Vec3 axis = b.minus(a);
+        double s = q.minus(a).dot(axis) / axis.dot(axis);
+        if (s < 0 || s > 1) return false;
+        double distance = q.minus(a).cross(axis).length() / axis.length();
+        return distance <= r0 + (r1 - r0) * s;
     }
 
     /** A random affine transform: scale (non-uniform when asked), rotation, translation. */

@@ -111,7 +111,7 @@ class StabilitySuite {
             int s = shapes.add(new Sphere(c, radius, M, Transform.IDENTITY, SourceSpan.NONE), Transform.IDENTITY, 0);
             ray.set(o.x(), o.y(), o.z(), d.x(), d.y(), d.z());
             boolean hit = shapes.span(s, ray, span);
-            if (failed(hit, hit ? span.tIn : Double.NaN, exactHit, exactT, decided, tolerance)) crt++;
+            if (failed(hit, hit ? span.tIn[0] : Double.NaN, exactHit, exactT, decided, tolerance)) crt++;
 
             // The textbook: a = d·d, b = 2(o − c)·d, c = |o − c|² − r², t = (−b − √(b² − 4ac)) / 2a.
             double ox = o.x() - c.x(), oy = o.y() - c.y(), oz = o.z() - c.z();

@@ -2,11 +2,13 @@ package dev.crt.lang.eval;
 
 import dev.crt.geom.Vec3;
 import dev.crt.lang.value.BackgroundValue;
+import dev.crt.lang.value.BooleanValue;
 import dev.crt.lang.value.CameraValue;
 import dev.crt.lang.value.ColorValue;
 import dev.crt.lang.value.MaterialValue;
 import dev.crt.lang.value.NumberValue;
 import dev.crt.lang.value.StringValue;
+import dev.crt.lang.value.TextureValue;
 import dev.crt.lang.value.Value;
 import dev.crt.lang.value.VectorValue;
 import dev.crt.scene.Background;
@@ -14,6 +16,7 @@ import dev.crt.scene.Camera;
 import dev.crt.scene.Material;
 import dev.crt.scene.Rgb;
 import dev.crt.scene.SourceSpan;
+import dev.crt.scene.Texture;
 import java.util.LinkedHashMap;
 import java.util.Map;
 
@@ -103,11 +106,19 @@ final class Attributes {
         return Vec3.ZERO;
     }
 
+    boolean bool(String name, boolean fallback) {
+        Given g = given.get(name);
+        if (g == null) return fallback;
+        if (g.value() instanceof BooleanValue b) return b.value();
+        wrongType(name, "a boolean", g.value());
+        return fallback;
+    }
+
     Rgb color(String name, Rgb fallback) {
         Given g = given.get(name);
         if (g == null) return fallback;
         if (g.value() instanceof ColorValue c) return c.color();
-        wrongType(name, "an rgb colour", g.value());
+        wrongType(name, name.equals("color") && type.equals("Material") ? "an rgb colour or a texture" : "an rgb colour", g.value());
         return fallback;
     }
 
@@ -159,6 +170,12 @@ final class Attributes {
         if (g.value() instanceof StringValue s) return s.value();
         wrongType(name, "a string", g.value());
         return fallback;
+    }
+
+    /** The texture given for {@code name}, or null when it is absent or not a texture (then read it as a colour). */
+    Texture texture(String name) {
+        Given g = given.get(name);
+        return g != null && g.value() instanceof TextureValue t ? t.texture() : null;
     }
 
     Material material(String name) {

@@ -17,7 +17,9 @@ import dev.crt.lang.value.NumberValue;
 import dev.crt.lang.value.StringValue;
 import dev.crt.lang.value.Value;
 import dev.crt.lang.value.VectorValue;
+import dev.crt.scene.Cone;
 import dev.crt.scene.Csg;
+import dev.crt.scene.Cylinder;
 import dev.crt.scene.CsgOperation;
 import dev.crt.scene.Entity;
 import dev.crt.scene.Rgb;
@@ -539,6 +541,13 @@ public final class Evaluator extends CRTBaseVisitor<Value> {
                 case '-' -> CsgOperation.DIFFERENCE;
                 default -> CsgOperation.INTERSECTION;
             };
+            for (EntityValue operand : List.of(x, y)) {
+                String open = openSurface(operand.entity());
+                if (open != null) {
+                    throw error("an open " + open + " (capped -> false) is a surface, not a solid, so it cannot be used in CSG",
+                            span(ctx));
+                }
+            }
             return EntityValue.of(new Csg(operation, x.entity(), y.entity(), Transform.IDENTITY, span(ctx)));
         }
         return Arithmetic.additive(op, a, b, ctx, this);
@@ -878,6 +887,13 @@ public final class Evaluator extends CRTBaseVisitor<Value> {
     SourceSpan span(Token token) {
         int start = positions.charOffset(token.getStartIndex());
         return positions.span(start, positions.charOffset(token.getStopIndex() + 1));
+    }
+
+    /** The type name of an entity that has no inside (an uncapped Cylinder or Cone), else null. */
+    private static String openSurface(Entity e) {
+        if (e instanceof Cylinder c && !c.capped()) return "Cylinder";
+        if (e instanceof Cone c && !c.capped()) return "Cone";
+        return null;
     }
 
     ScriptError error(String message, SourceSpan where) { return new ScriptError(message, where, callChain()); }

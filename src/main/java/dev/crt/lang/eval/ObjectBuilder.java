@@ -9,18 +9,28 @@ import dev.crt.lang.value.CameraValue;
 import dev.crt.lang.value.EntityValue;
 import dev.crt.lang.value.LightValue;
 import dev.crt.lang.value.MaterialValue;
+import dev.crt.lang.value.NumberValue;
+import dev.crt.lang.value.TextureValue;
 import dev.crt.lang.value.Value;
 import dev.crt.scene.ApertureShape;
+import dev.crt.scene.AreaLight;
 import dev.crt.scene.Background;
 import dev.crt.scene.Box;
+import dev.crt.scene.Checker;
 import dev.crt.scene.Camera;
+import dev.crt.scene.Cone;
+import dev.crt.scene.Cylinder;
 import dev.crt.scene.GradientBackground;
 import dev.crt.scene.Material;
 import dev.crt.scene.ParallelLight;
 import dev.crt.scene.Plane;
 import dev.crt.scene.PointLight;
+import dev.crt.scene.Projection;
 import dev.crt.scene.Rgb;
 import dev.crt.scene.SolidBackground;
+import dev.crt.scene.SpotLight;
+import dev.crt.scene.Texture;
+import dev.crt.scene.Torus;
 import dev.crt.scene.SourceSpan;
 import dev.crt.scene.Sphere;
 import java.util.ArrayList;
@@ -39,20 +49,30 @@ final class ObjectBuilder {
     private static final Map<String, ObjectType> TYPES = new LinkedHashMap<>();
 
     static {
-        type("Camera", ObjectBuilder::camera, "position", "pointing", "fov", "roll", "aperture", "focaldistance", "apertureshape");
+        type("Camera", ObjectBuilder::camera, "position", "pointing", "fov", "roll", "aperture", "focaldistance", "apertureshape",
+                "projection");
         type("PointLight", ObjectBuilder::pointLight, "origin", "color", "falloff", "ambient");
         type("ParallelLight", ObjectBuilder::parallelLight, "from", "pointing", "color", "ambient");
+        type("SpotLight", ObjectBuilder::spotLight, "origin", "pointing", "angle", "innerangle", "color", "falloff", "ambient");
+        type("AreaLight", ObjectBuilder::areaLight, "corner", "edge1", "edge2", "samples", "color", "falloff", "ambient");
         type("Material", ObjectBuilder::material, "color", "diffuse", "specular", "shininess", "reflectivity",
-                "transparency", "ior", "emission");
+                "transparency", "ior", "emission", "fresnel", "absorption");
+        type("Checker", ObjectBuilder::checker, "color1", "color2", "scale");
         type("Sphere", ObjectBuilder::sphere, "center", "radius", "material");
         type("Box", ObjectBuilder::box, "cornerA", "cornerB", "material");
         type("Plane", ObjectBuilder::plane, "normal", "position", "material");
+        type("Cylinder", ObjectBuilder::cylinder, "from", "to", "radius", "capped", "material");
+        type("Torus", ObjectBuilder::torus, "center", "axis", "major", "minor", "material");
+        type("Cone", ObjectBuilder::cone, "from", "to", "radius", "radius2", "capped", "material");
         type("Background", ObjectBuilder::background, "color", "horizon", "sky", "image", "angle");
     }
 
     private static void type(String name, BiFunction<ObjectBuilder, Attributes, Value> build, String... attributes) {
         TYPES.put(name, new ObjectType(Set.copyOf(Arrays.asList(attributes)), build));
     }
+
+    /** An area light's n is capped so that n² shadow rays per shading point stay a render, not a hang. */
+    static final int MAX_AREA_SAMPLES = 256;
 
     private final Evaluator evaluator;
     private final Assets assets;
@@ -80,10 +100,10 @@ final class ObjectBuilder {
             SourceSpan typeSpan, SourceSpan objectSpan) {
         Attributes a = new Attributes(evaluator, typeName, typeSpan, objectSpan);
         for (CRTParser.AttributeContext attr : written) {
-            String name = attr.IDENT().getText();
+            String name = attr.key.getText();
             SourceSpan at = evaluator.span(attr);
             // A wrong name is the name's fault alone: underline just it, as the reference's example does.
-            SourceSpan nameSpan = evaluator.span(attr.IDENT().getSymbol());
+            SourceSpan nameSpan = evaluator.span(attr.key);
             if (!known.contains(name)) {
                 a.markFailed();
                 evaluator.report(evaluator.error("unknown attribute '" + name + "' for " + typeName
@@ -133,7 +153,19 @@ final class ObjectBuilder {
             a.error("apertureshape", "apertureshape must be one of \"" + String.join("\", \"", shapes) + "\", got \""
                     + shapeName + "\"" + Spelling.suggestion(shapeName.toLowerCase(Locale.ROOT), shapes));
         }
-        return new CameraValue(new Camera(position, pointing, fov, roll, aperture, focalDistance, shape, a.typeSpan()));
+        String projectionName = a.string("projection", "perspective");
+        Projection projection = Projection.PERSPECTIVE;
+        List<String> projections = new ArrayList<>();
+        for (Projection p : Projection.values()) {
+            projections.add(p.scriptName());
+            if (p.scriptName().equals(projectionName)) projection = p;
+        }
+        if (!projections.contains(projectionName)) {
+            a.error("projection", "projection must be one of \"" + String.join("\", \"", projections) + "\", got \""
+                    + projectionName + "\"" + Spelling.suggestion(projectionName.toLowerCase(Locale.ROOT), projections));
+        }
+        return new CameraValue(new Camera(position, pointing, fov, roll, aperture, focalDistance, shape, projection,
+                a.typeSpan()));
     }
 
     private Value pointLight(Attributes a) {
@@ -152,10 +184,41 @@ final class ObjectBuilder {
                 a.number("ambient", 0, Range.NOT_NEGATIVE), a.typeSpan()));
     }
 
+    private Value spotLight(Attributes a) {
+        Vec3 origin = a.vector("origin", null), pointing = a.vector("pointing", null);
+        if (a.has("origin") && a.has("pointing") && origin.minus(pointing).length() == 0) {
+            a.error("pointing", "a SpotLight's pointing must differ from its origin");
+        }
+        double angle = a.number("angle", 30, new Range(0, true, 90, false));
+        double inner = a.number("innerangle", angle, new Range(0, false, angle, false));
+        return new LightValue(new SpotLight(origin, pointing, angle, inner, a.color("color", Rgb.WHITE),
+                a.number("falloff", 0, Range.NOT_NEGATIVE), a.number("ambient", 0, Range.NOT_NEGATIVE), a.typeSpan()));
+    }
+
+    private Value areaLight(Attributes a) {
+        Vec3 corner = a.vector("corner", null), e1 = a.vector("edge1", null), e2 = a.vector("edge2", null);
+        if (a.has("edge1") && a.has("edge2") && e1.cross(e2).length() == 0) {
+            a.error("edge2", "an AreaLight's edge1 and edge2 must span a parallelogram (not zero, not parallel)");
+        }
+        int samples = a.integer("samples", 4, 1);
+        if (samples > MAX_AREA_SAMPLES) {
+            a.error("samples", "samples must be at most " + MAX_AREA_SAMPLES + " (that is " + MAX_AREA_SAMPLES * MAX_AREA_SAMPLES
+                    + " shadow rays per shading point), got " + samples);
+        }
+        return new LightValue(new AreaLight(corner, e1, e2, samples, a.color("color", Rgb.WHITE),
+                a.number("falloff", 0, Range.NOT_NEGATIVE), a.number("ambient", 0, Range.NOT_NEGATIVE), a.typeSpan()));
+    }
+
+    private Value checker(Attributes a) {
+        return new TextureValue(new Checker(a.color("color1", Rgb.WHITE), a.color("color2", Rgb.BLACK),
+                a.number("scale", 1, Range.POSITIVE)));
+    }
+
     private Value material(Attributes a) {
         Material d = Material.DEFAULT;
+        Texture texture = a.texture("color");
         return new MaterialValue(new Material(
-                a.color("color", d.color()),
+                texture != null ? d.color() : a.color("color", d.color()),
                 a.number("diffuse", d.diffuse(), Range.ANY),
                 a.number("specular", d.specular(), Range.ANY),
                 a.number("shininess", d.shininess(), Range.ANY),
@@ -163,7 +226,20 @@ final class ObjectBuilder {
                 a.number("transparency", d.transparency(), Range.UNIT),
                 a.number("ior", d.ior(), Range.POSITIVE),
                 a.color("emission", d.emission()),
-                a.has("diffuse")));
+                a.has("diffuse"),
+                a.bool("fresnel", false),
+                absorption(a),
+                texture));
+    }
+
+    private static Rgb absorption(Attributes a) {
+        Rgb c = a.color("absorption", Rgb.BLACK);
+        if (c.r() < 0 || c.g() < 0 || c.b() < 0) {
+            a.error("absorption", "absorption must not be negative, got rgb(" + NumberValue.format(c.r()) + ", "
+                    + NumberValue.format(c.g()) + ", " + NumberValue.format(c.b()) + ")");
+            return Rgb.BLACK;
+        }
+        return c;
     }
 
     private Value sphere(Attributes a) {
@@ -185,6 +261,38 @@ final class ObjectBuilder {
         if (unit == null) unit = Vec3.Y;
         return EntityValue.of(new Plane(unit, a.vector("position", Vec3.ZERO), a.material("material"),
                 Transform.IDENTITY, a.objectSpan()));
+    }
+
+    private Value cylinder(Attributes a) {
+        Vec3 from = a.vector("from", null), to = a.vector("to", null);
+        axis(a, "Cylinder", from, to);
+        return EntityValue.of(new Cylinder(from, to, a.number("radius", 1, Range.POSITIVE), a.bool("capped", true),
+                a.material("material"), Transform.IDENTITY, a.objectSpan()));
+    }
+
+    private Value torus(Attributes a) {
+        Vec3 axis = a.vector("axis", Vec3.Y);
+        Vec3 unit = Builtins.unit(axis);
+        if (a.has("axis") && unit == null) a.error("axis", "a Torus's axis must not be the zero vector");
+        return EntityValue.of(new Torus(a.vector("center", Vec3.ZERO), unit == null ? Vec3.Y : unit,
+                a.number("major", 1, Range.POSITIVE), a.number("minor", 0.25, Range.POSITIVE), a.material("material"),
+                Transform.IDENTITY, a.objectSpan()));
+    }
+
+    private Value cone(Attributes a) {
+        Vec3 from = a.vector("from", null), to = a.vector("to", null);
+        axis(a, "Cone", from, to);
+        double r0 = a.number("radius", 1, Range.NOT_NEGATIVE), r1 = a.number("radius2", 0, Range.NOT_NEGATIVE);
+        if (r0 == 0 && r1 == 0) a.error(a.has("radius2") ? "radius2" : "radius", "a Cone's radius and radius2 cannot both be 0");
+        return EntityValue.of(new Cone(from, to, r0, r1, a.bool("capped", true), a.material("material"),
+                Transform.IDENTITY, a.objectSpan()));
+    }
+
+    /** The axis of a Cylinder or Cone must have a length (by distance: -0 and 0 are the same coordinate). */
+    private static void axis(Attributes a, String type, Vec3 from, Vec3 to) {
+        if (a.has("from") && a.has("to") && from.minus(to).length() == 0) {
+            a.error("to", "a " + type + "'s to must differ from its from");
+        }
     }
 
     private Value background(Attributes a) {

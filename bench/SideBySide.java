@@ -1,0 +1,54 @@
+import java.lang.management.ManagementFactory;
+import java.lang.reflect.*;
+import java.net.*;
+import java.nio.file.*;
+import java.util.*;
+
+/**
+ * Side by side: two CRT jars in one JVM (one class loader each), alternating renders of one scene
+ * on one thread, process CPU time per render (less disturbed by other work on a shared machine
+ * than wall time), after two warm-up rounds. Run:
+ * java bench/SideBySide.java BASE.jar NEW.jar SCENE.crt WIDTH HEIGHT ROUNDS
+ */
+public class SideBySide {
+    public static void main(String[] a) throws Exception {
+        String text = Files.readString(Path.of(a[2]));
+        int w = Integer.parseInt(a[3]), h = Integer.parseInt(a[4]), rounds = Integer.parseInt(a[5]);
+        Object[] renderers = new Object[2];
+        Method[] render = new Method[2];
+        Object[] none = new Object[2];
+        for (int k = 0; k < 2; k++) {
+            ClassLoader cl = new URLClassLoader(new URL[] {Path.of(a[k]).toUri().toURL()}, null);
+            Class<?> src = cl.loadClass("dev.crt.lang.Source"), opts = cl.loadClass("dev.crt.lang.CompileOptions");
+            Object source = src.getMethod("of", String.class, String.class).invoke(null, "s", text);
+            Object result = cl.loadClass("dev.crt.lang.CrtCompiler").getMethod("compile", src, opts)
+                    .invoke(null, source, opts.getField("DEFAULT").get(null));
+            Object scene = result.getClass().getMethod("scene").invoke(result);
+            Class<?> sceneC = cl.loadClass("dev.crt.scene.Scene"), settingsC = cl.loadClass("dev.crt.scene.Settings");
+            Object settings = sceneC.getMethod("settings").invoke(scene);
+            settings = settingsC.getMethod("withSize", int.class, int.class).invoke(settings, w, h);
+            Object name = sceneC.getMethod("sourceName").invoke(scene), ents = sceneC.getMethod("entities").invoke(scene);
+            scene = sceneC.getConstructor(String.class, settingsC, List.class).newInstance(name, settings, ents);
+            Class<?> rc = cl.loadClass("dev.crt.render.Renderer"), mon = cl.loadClass("dev.crt.render.RenderMonitor");
+            renderers[k] = rc.getMethod("prepare", sceneC).invoke(null, scene);
+            render[k] = rc.getMethod("render", int.class, mon);
+            none[k] = mon.getField("NONE").get(null);
+        }
+        var os = (com.sun.management.OperatingSystemMXBean) ManagementFactory.getOperatingSystemMXBean();
+        List<List<Double>> cpu = List.of(new ArrayList<>(), new ArrayList<>());
+        for (int r = -2; r < rounds; r++) {
+            for (int k0 = 0; k0 < 2; k0++) {
+                int k = (r & 1) == 0 ? k0 : 1 - k0;
+                long c0 = os.getProcessCpuTime();
+                render[k].invoke(renderers[k], 1, none[k]);
+                double c = (os.getProcessCpuTime() - c0) / 1e9;
+                if (r >= 0) cpu.get(k).add(c);
+            }
+        }
+        for (int k = 0; k < 2; k++) Collections.sort(cpu.get(k));
+        double m0 = cpu.get(0).get(rounds / 2), m1 = cpu.get(1).get(rounds / 2);
+        System.out.printf("base median CPU %.3f s, new median CPU %.3f s, new/base %.4f%n", m0, m1, m1 / m0);
+        System.out.println("base " + cpu.get(0));
+        System.out.println("new  " + cpu.get(1));
+    }
+}

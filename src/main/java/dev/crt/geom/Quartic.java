@@ -1,0 +1,264 @@
+package dev.crt.geom;
+
+/**
+ * Real roots of the depressed monic quartic x⁴ + c2·x² + c1·x + c0 within [−bound, bound], by three
+ * methods compared in docs/benchmarks.md: the closed form ({@link #FERRARI}), isolating intervals
+ * from the derivative's roots refined by safeguarded Newton steps ({@link #ISOLATE}, the default:
+ * it never lost a root in the measurements), and Newton from the bound with deflation
+ * ({@link #NEWTON}). Each writes the roots in increasing order into {@code out[0…]} and returns
+ * their count; {@code out} must hold 8 doubles (the upper half is scratch). No allocation.
+ */
+public final class Quartic {
+    public static final int FERRARI = 0;
+    public static final int ISOLATE = 1;
+    public static final int NEWTON = 2;
+    public static final String[] NAMES = {"closed form (Ferrari)", "isolating intervals + safeguarded Newton",
+        "Newton from a bound"};
+
+    private Quartic() {}
+
+    public static int solve(int method, double c2, double c1, double c0, double bound, double[] out) {
+        return switch (method) {
+            case FERRARI -> ferrari(c2, c1, c0, bound, out);
+            case ISOLATE -> isolate(c2, c1, c0, bound, out);
+            case NEWTON -> newton(c2, c1, c0, bound, out);
+            default -> throw new IllegalArgumentException("no quartic method " + method);
+        };
+    }
+
+    static double quartic(double c2, double c1, double c0, double x) {
+        double x2 = x * x;
+        return (x2 + c2) * x2 + c1 * x + c0;
+    }
+
+    // ---- closed form ---------------------------------------------------------------------------
+
+    /**
+     * Ferrari: with m > 0 a root of the resolvent cubic 8m³ + 8c2·m² + (2c2² − 8c0)m − c1² = 0,
+     * the quartic is the product of x² ∓ √(2m)·x + c2/2 + m ± c1/(2√(2m)).
+     */
+    public static int ferrari(double c2, double c1, double c0, double bound, double[] out) {
+        int n = 0;
+        if (c1 == 0) {
+            // Biquadratic: y = x² solves y² + c2·y + c0 = 0.
+            n = quadratic(1, c2, c0, out, 4);
+            int k = 0;
+            for (int i = 0; i < n; i++) {
+                double y = out[4 + i];
+                if (y >= 0) {
+                    double s = Math.sqrt(y);
+                    out[k++] = -s;
+                    out[k++] = s;
+                }
+            }
+            return keep(out, k, bound);
+        }
+        double m = largestCubicRoot(c2, c2 * c2 / 4 - c0, -c1 * c1 / 8);
+        if (!(m > 0)) return 0;
+        double s = Math.sqrt(2 * m);
+        double h = c1 / (2 * s);
+        n = quadratic(1, -s, c2 / 2 + m + h, out, 4);
+        n += quadratic(1, s, c2 / 2 + m - h, out, 4 + n);
+        for (int i = 0; i < n; i++) out[i] = out[4 + i];
+        return keep(out, n, bound);
+    }
+
+    /** Real roots of a·x² + b·x + c (a ≠ 0) without cancellation, into out[at…]; returns 0, 1 or 2. */
+    private static int quadratic(double a, double b, double c, double[] out, int at) {
+        double disc = b * b - 4 * a * c;
+        if (disc < 0) return 0;
+        double q = -0.5 * (b + Math.copySign(Math.sqrt(disc), b));
+        if (q == 0) {
+            out[at] = 0;
+            return 1;
+        }
+        out[at] = q / a;
+        out[at + 1] = c / q;
+        return 2;
+    }
+
+    /** The largest real root of x³ + a·x² + b·x + c by the trigonometric or Cardano formula. */
+    static double largestCubicRoot(double a, double b, double c) {
+        double q = (a * a - 3 * b) / 9;
+        double r = (2 * a * a * a - 9 * a * b + 27 * c) / 54;
+        double q3 = q * q * q;
+        if (r * r < q3) {
+            double theta = Math.acos(Math.max(-1, Math.min(1, r / Math.sqrt(q3))));
+            return -2 * Math.sqrt(q) * Math.cos((theta - 2 * Math.PI) / 3) - a / 3;
+        }
+        double big = -Math.copySign(Math.cbrt(Math.abs(r) + Math.sqrt(r * r - q3)), r);
+        double small = big == 0 ? 0 : q / big;
+        return big + small - a / 3;
+    }
+
+    /** Sorts the first n roots, drops those outside [−bound, bound], and returns how many are left. */
+    private static int keep(double[] out, int n, double bound) {
+        for (int i = 1; i < n; i++) {
+            double x = out[i];
+            int j = i;
+            while (j > 0 && out[j - 1] > x) {
+                out[j] = out[j - 1];
+                j--;
+            }
+            out[j] = x;
+        }
+        int k = 0;
+        for (int i = 0; i < n; i++) if (out[i] >= -bound && out[i] <= bound) out[k++] = out[i];
+        return k;
+    }
+
+    // ---- isolating intervals -------------------------------------------------------------------
+
+    /**
+     * The quartic is monotone between consecutive roots of its derivative 4x³ + 2c2·x + c1, which
+     * is monotone between the roots ±√(−c2/6) of its own derivative: so each level's roots are
+     * isolated by the next level's, and each is refined inside a bracket where the function changes
+     * sign. A pair of roots however close keeps a critical point between them, so neither is lost.
+     */
+    public static int isolate(double c2, double c1, double c0, double bound, double[] out) {
+        // The critical points of the quartic (the cubic's roots) in out[4…], piece by monotone piece
+        // of the cubic: [−bound, −i], [−i, i], [i, bound] with i = √(−c2/6), or all of it.
+        double lo = -bound;
+        int crit = 0;
+        double inflection = c2 < 0 ? Math.sqrt(-c2 / 6) : bound;
+        double a = lo, fa = cubic(c2, c1, a);
+        for (int piece = 0; piece < 3; piece++) {
+            double b = Math.min(bound, piece == 0 ? -inflection : piece == 1 ? inflection : bound);
+            if (!(b > a)) continue;
+            double fb = cubic(c2, c1, b);
+            double x = Double.NaN;
+            if (fa == 0) x = a;
+            else if (fb != 0 && (fa < 0) != (fb < 0)) x = refineCubic(c2, c1, a, b, fa);
+            if (x == x && (crit == 0 || out[3 + crit] != x)) out[4 + crit++] = x;
+            a = b;
+            fa = fb;
+        }
+        if (fa == 0 && (crit == 0 || out[3 + crit] != a)) out[4 + crit++] = a;
+        // Roots of the quartic between consecutive critical points.
+        int n = 0;
+        double x0 = lo, f0 = quartic(c2, c1, c0, x0);
+        for (int i = 0; i <= crit; i++) {
+            double x1 = i < crit ? out[4 + i] : bound;
+            if (x1 <= x0 && i < crit) continue;
+            double f1 = quartic(c2, c1, c0, x1);
+            if (f1 == 0) {
+                if (n == 0 || out[n - 1] != x1) out[n++] = x1;
+            } else if (f0 != 0 && (f0 < 0) != (f1 < 0)) {
+                out[n++] = refineQuartic(c2, c1, c0, x0, x1, f0);
+            }
+            x0 = x1;
+            f0 = f1;
+        }
+        return n;
+    }
+
+    private static double cubic(double c2, double c1, double x) {
+        return (4 * x * x + 2 * c2) * x + c1;
+    }
+
+    /** The root of the cubic in [a, b], where it changes sign (fa = its value at a), to full precision. */
+    private static double refineCubic(double c2, double c1, double a, double b, double fa) {
+        double x = 0.5 * (a + b);
+        for (int i = 0; i < 200; i++) {
+            double f = cubic(c2, c1, x);
+            if (f == 0) return x;
+            if ((f < 0) == (fa < 0)) a = x;
+            else b = x;
+            double d = 12 * x * x + 2 * c2;
+            double next = x - f / d;
+            if (!(next > a && next < b) || Math.abs(next - x) > 0.5 * (b - a)) next = 0.5 * (a + b);
+            if (next == x || b - a <= 2 * Math.ulp(Math.max(Math.abs(a), Math.abs(b)))) return next;
+            x = next;
+        }
+        return x;
+    }
+
+    /** The root of the quartic in [a, b], where it changes sign (fa = its value at a), to full precision. */
+    private static double refineQuartic(double c2, double c1, double c0, double a, double b, double fa) {
+        double x = 0.5 * (a + b);
+        for (int i = 0; i < 200; i++) {
+            double f = quartic(c2, c1, c0, x);
+            if (f == 0) return x;
+            if ((f < 0) == (fa < 0)) a = x;
+            else b = x;
+            double d = cubic(c2, c1, x);
+            double next = x - f / d;
+            if (!(next > a && next < b) || Math.abs(next - x) > 0.5 * (b - a)) next = 0.5 * (a + b);
+            if (next == x || b - a <= 2 * Math.ulp(Math.max(Math.abs(a), Math.abs(b)))) return next;
+            x = next;
+        }
+        return x;
+    }
+
+    // ---- Newton from a bound -------------------------------------------------------------------
+
+    /**
+     * Newton's method started left of every root converges to the smallest one when nothing
+     * bends in between; the root is divided out and the search starts again from the left on
+     * the cubic, and so on. Each root is then polished once on the full quartic. It loses roots
+     * behind a dip of the quartic that does not reach zero, where Newton stalls.
+     */
+    public static int newton(double c2, double c1, double c0, double bound, double[] out) {
+        // Coefficients of the current polynomial, highest first: x⁴ + 0x³ + c2x² + c1x + c0.
+        double p4 = 1, p3 = 0, p2 = c2, p1 = c1, p0 = c0;
+        int degree = 4, n = 0;
+        while (degree > 0) {
+            double x = -bound;
+            boolean found = false;
+            for (int i = 0; i < 60; i++) {
+                double f, d;
+                if (degree == 4) {
+                    f = (((p4 * x + p3) * x + p2) * x + p1) * x + p0;
+                    d = ((4 * p4 * x + 3 * p3) * x + 2 * p2) * x + p1;
+                } else if (degree == 3) {
+                    f = ((p3 * x + p2) * x + p1) * x + p0;
+                    d = (3 * p3 * x + 2 * p2) * x + p1;
+                } else if (degree == 2) {
+                    f = (p2 * x + p1) * x + p0;
+                    d = 2 * p2 * x + p1;
+                } else {
+                    f = p1 * x + p0;
+                    d = p1;
+                }
+                if (f == 0) {
+                    found = true;
+                    break;
+                }
+                if (d == 0) break;
+                double next = x - f / d;
+                if (!(next <= bound) || next < x - bound) break;
+                if (Math.abs(next - x) <= 4 * Math.ulp(Math.abs(next) + bound * 1e-16)) {
+                    x = next;
+                    found = true;
+                    break;
+                }
+                x = next;
+            }
+            if (!found) break;
+            out[n++] = x;
+            // Synthetic division by (x − root).
+            if (degree == 4) {
+                double q3 = p4, q2 = p3 + x * q3, q1 = p2 + x * q2, q0 = p1 + x * q1;
+                p3 = q3;
+                p2 = q2;
+                p1 = q1;
+                p0 = q0;
+            } else if (degree == 3) {
+                double q2 = p3, q1 = p2 + x * q2, q0 = p1 + x * q1;
+                p2 = q2;
+                p1 = q1;
+                p0 = q0;
+            } else if (degree == 2) {
+                double q1 = p2, q0 = p1 + x * q1;
+                p1 = q1;
+                p0 = q0;
+            }
+            degree--;
+        }
+        for (int i = 0; i < n; i++) {
+            double x = out[i], d = cubic(c2, c1, x);
+            if (d != 0) out[i] = x - quartic(c2, c1, c0, x) / d;
+        }
+        return keep(out, n, bound);
+    }
+}

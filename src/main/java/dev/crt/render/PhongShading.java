@@ -1,0 +1,94 @@
+package dev.crt.render;
+
+/**
+ * CRT's local shading model (rendering-model.md): E + Σℓ aℓ(Cℓ⊙C) + Σ over each light's samples
+ * of Sℓ·Aℓ·wℓ·(kd·max(0,N·ω)(Cℓ⊙C) + ks·max(0,R·V)^n·Cℓ), where wℓ is the factor of the light's
+ * kind (1, a spot's cone, an area sample's cosine and share) and Sℓ the shadow factor of its
+ * tracer (with Beer's-law absorption per channel when the scene has absorbing materials). One per
+ * render thread; a light sample whose diffuse and specular terms are both zero casts no shadow ray.
+ */
+final class PhongShading {
+    private final Tracer tracer;
+    private final double[] materials;
+    private final Lights lights;
+    private final LightSample sample = new LightSample();
+
+    PhongShading(Tracer tracer, double[] materials, Lights lights) {
+        this.tracer = tracer;
+        this.materials = materials;
+        this.lights = lights;
+    }
+
+    /**
+     * The local colour of material m, of surface colour C = (cr, cg, cb), at p with ray-facing
+     * normal n and view direction v, into {@code colour}.
+     */
+    void shade(int m, double cr, double cg, double cb, double px, double py, double pz, double nx, double ny, double nz,
+            double vx, double vy, double vz, double delta, double[] colour) {
+        double[] mat = materials;
+        double kd = mat[m + Materials.DIFFUSE], ks = mat[m + Materials.SPECULAR];
+        double shininess = mat[m + Materials.SHININESS];
+        double r = mat[m + Materials.ER] + lights.ambientR * cr;
+        double g = mat[m + Materials.EG] + lights.ambientG * cg;
+        double b = mat[m + Materials.EB] + lights.ambientB * cb;
+        double nv = nx * vx + ny * vy + nz * vz;
+        Lights l = lights;
+        LightSample ls = sample;
+        Tracer t = tracer;
+        for (int i = 0; i < l.count; i++) {
+            byte kind = l.kind[i];
+            for (int k = 0, samples = l.sampleCount(i); k < samples; k++) {
+                double wx, wy, wz, d2, falloff, weight;
+                if (kind == Lights.POINT) {
+                    // The common case in locals (PointLightSource's formulas): no scratch traffic per light.
+                    wx = l.x[i] - px;
+                    wy = l.y[i] - py;
+                    wz = l.z[i] - pz;
+                    d2 = wx * wx + wy * wy + wz * wz;
+                    double dist = Math.sqrt(d2);
+                    wx /= dist;
+                    wy /= dist;
+                    wz /= dist;
+                    falloff = l.falloff[i];
+                    weight = 1;
+                } else {
+                    l.sample(i, k, px, py, pz, t.lightRandom, ls);
+                    weight = ls.weight;
+                    if (weight == 0) continue;
+                    wx = ls.wx;
+                    wy = ls.wy;
+                    wz = ls.wz;
+                    d2 = ls.d2;
+                    falloff = ls.falloff;
+                }
+                double nw = nx * wx + ny * wy + nz * wz;
+                double diffuse = nw > 0 ? kd * nw : 0;
+                double specular = 0;
+                if (ks != 0) {
+                    double rv = 2 * nw * nv - (wx * vx + wy * vy + wz * vz);
+                    if (rv > 0) specular = ks * Tracer.power(rv, shininess);
+                }
+                if (diffuse == 0 && specular == 0) continue;
+                double side = nw > 0 ? delta : -delta;
+                double s = kind == Lights.POINT
+                        ? t.shadowTo(px + side * nx, py + side * ny, pz + side * nz, l.x[i], l.y[i], l.z[i], side, i)
+                        : t.shadow(ls, px, py, pz, nx, ny, nz, side, i);
+                if (s == 0) continue;
+                double att = falloff > 0 ? falloff / d2 : 1;
+                double f = s * att * weight;
+                double fr = f, fg = f, fb = f;
+                if (t.absorbing) {
+                    fr *= t.shadowR;
+                    fg *= t.shadowG;
+                    fb *= t.shadowB;
+                }
+                r += fr * (diffuse * l.r[i] * cr + specular * l.r[i]);
+                g += fg * (diffuse * l.g[i] * cg + specular * l.g[i]);
+                b += fb * (diffuse * l.b[i] * cb + specular * l.b[i]);
+            }
+        }
+        colour[0] = r;
+        colour[1] = g;
+        colour[2] = b;
+    }
+}
