@@ -26,7 +26,9 @@ public final class GpuScene {
     /** The shader's limits: primitives per top-level entity (a 32-bit inside mask) and lights. */
     public static final int MAX_LEAVES = 32, MAX_LIGHTS = 16;
     /** Light kinds as the shader reads them. */
-    public static final int POINT_LIGHT = 0, PARALLEL_LIGHT = 1;
+    public static final int POINT_LIGHT = 0, PARALLEL_LIGHT = 1, SPOT_LIGHT = 2, AREA_LIGHT = 3;
+    /** Floats per light: four vec4. */
+    public static final int LIGHT_FLOATS = 16;
 
     final float[] data;
     final int texels;
@@ -41,7 +43,10 @@ public final class GpuScene {
     final int boundedPrimitives;
     /** Entities with infinite bounds, drawn by a full-screen pass. */
     final int[] unboundedOffsets;
-    /** Per light three vec4: (kind, position or direction towards the light), (colour, ambient), (falloff, 0, 0, 0). */
+    /**
+     * Per light four vec4: (kind, position or direction towards the light), (colour, ambient),
+     * (falloff, cos angle, cos innerangle, 0), (spot axis or area normal, 0).
+     */
     final float[] lights;
     final int lightCount;
     final Background background;

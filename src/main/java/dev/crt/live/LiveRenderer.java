@@ -394,15 +394,18 @@ public final class LiveRenderer implements AutoCloseable {
         glUniform1i(glGetUniformLocation(p, "lightCount"), scene.lightCount);
         int n = scene.lightCount;
         if (n > 0) {
-            float[] a = new float[4 * n], b = new float[4 * n], c = new float[4 * n];
+            float[] a = new float[4 * n], b = new float[4 * n], c = new float[4 * n], d = new float[4 * n];
+            int stride = GpuScene.LIGHT_FLOATS;
             for (int i = 0; i < n; i++) {
-                System.arraycopy(scene.lights, 12 * i, a, 4 * i, 4);
-                System.arraycopy(scene.lights, 12 * i + 4, b, 4 * i, 4);
-                System.arraycopy(scene.lights, 12 * i + 8, c, 4 * i, 4);
+                System.arraycopy(scene.lights, stride * i, a, 4 * i, 4);
+                System.arraycopy(scene.lights, stride * i + 4, b, 4 * i, 4);
+                System.arraycopy(scene.lights, stride * i + 8, c, 4 * i, 4);
+                System.arraycopy(scene.lights, stride * i + 12, d, 4 * i, 4);
             }
             glUniform4fv(glGetUniformLocation(p, "lightA"), a);
             glUniform4fv(glGetUniformLocation(p, "lightB"), b);
             glUniform4fv(glGetUniformLocation(p, "lightC"), c);
+            glUniform4fv(glGetUniformLocation(p, "lightD"), d);
         }
         glUniform1i(glGetUniformLocation(p, "selected"), overlay.selected() + 1);
         glUniform1i(glGetUniformLocation(p, "hovered"), overlay.hovered() + 1);

@@ -8,9 +8,11 @@ import dev.crt.scene.Csg;
 import dev.crt.scene.Entity;
 import dev.crt.scene.Light;
 import dev.crt.scene.Material;
+import dev.crt.scene.AreaLight;
 import dev.crt.scene.ParallelLight;
 import dev.crt.scene.Plane;
 import dev.crt.scene.PointLight;
+import dev.crt.scene.SpotLight;
 import dev.crt.scene.Primitive;
 import dev.crt.scene.Scene;
 import dev.crt.scene.Sphere;
@@ -64,8 +66,8 @@ public final class SceneConverter {
             throw new UnsupportedSceneException("the live view shows at most " + GpuScene.MAX_LIGHTS
                     + " lights; this scene has " + sceneLights.size());
         }
-        float[] lights = new float[12 * sceneLights.size()];
-        for (int i = 0; i < sceneLights.size(); i++) light(sceneLights.get(i), lights, 12 * i);
+        float[] lights = new float[GpuScene.LIGHT_FLOATS * sceneLights.size()];
+        for (int i = 0; i < sceneLights.size(); i++) light(sceneLights.get(i), lights, GpuScene.LIGHT_FLOATS * i);
         int[] boundedAll = new int[nb + nc];
         float[] boxesAll = new float[6 * (nb + nc)];
         System.arraycopy(bounded, 0, boundedAll, 0, nb);
@@ -87,10 +89,16 @@ public final class SceneConverter {
         boxes[at + 5] = (float) b.max().z();
     }
 
+    /**
+     * Writes one light's four vec4: (kind, position or direction towards it), (colour, ambient),
+     * (falloff, cos angle, cos innerangle, 0) and (axis or normal, 0). A spot light is drawn
+     * exactly (its smoothstep cone); an area light as one point at its centre whose strength
+     * follows the light's |normal·ω| (no soft shadows: the live view casts one shadow ray).
+     */
     private static void light(Light light, float[] out, int at) {
-        Vec3 p;
+        Vec3 p, axis = Vec3.ZERO;
         int kind;
-        double falloff;
+        double falloff, cosOuter = 0, cosInner = 0;
         if (light instanceof PointLight pl) {
             kind = GpuScene.POINT_LIGHT;
             p = pl.origin();
@@ -99,6 +107,18 @@ public final class SceneConverter {
             kind = GpuScene.PARALLEL_LIGHT;
             p = pl.towardsLight();
             falloff = 0;
+        } else if (light instanceof SpotLight sl) {
+            kind = GpuScene.SPOT_LIGHT;
+            p = sl.origin();
+            falloff = sl.falloff();
+            axis = sl.pointing().minus(sl.origin()).normalize();
+            cosOuter = Math.cos(Math.toRadians(sl.angle()));
+            cosInner = Math.cos(Math.toRadians(sl.innerAngle()));
+        } else if (light instanceof AreaLight al) {
+            kind = GpuScene.AREA_LIGHT;
+            p = al.corner().plus(al.edge1().plus(al.edge2()).times(0.5));
+            falloff = al.falloff();
+            axis = al.edge1().cross(al.edge2()).normalize();
         } else {
             throw new UnsupportedSceneException("the live view cannot show a " + kindName(light) + " yet");
         }
@@ -111,6 +131,11 @@ public final class SceneConverter {
         out[at + 6] = (float) light.color().b();
         out[at + 7] = (float) light.ambient();
         out[at + 8] = (float) falloff;
+        out[at + 9] = (float) cosOuter;
+        out[at + 10] = (float) cosInner;
+        out[at + 12] = (float) axis.x();
+        out[at + 13] = (float) axis.y();
+        out[at + 14] = (float) axis.z();
     }
 
     /** Writes entity {@code e}'s block; returns its world bounds. */

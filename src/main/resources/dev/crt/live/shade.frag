@@ -11,7 +11,8 @@ uniform int shadowLights;     // and only for the first this many lights
 uniform int lightCount;
 uniform vec4 lightA[16];      // kind, position or direction towards the light
 uniform vec4 lightB[16];      // colour, ambient
-uniform vec4 lightC[16];      // falloff
+uniform vec4 lightC[16];      // falloff, cos angle, cos innerangle (spot)
+uniform vec4 lightD[16];      // spot axis, or area light normal
 uniform int selected;         // entity index + 1, 0 for none
 uniform int hovered;
 
@@ -69,11 +70,20 @@ void main() {
         c += lightB[l].a * cl * base;
         vec3 w;
         float dist, att = 1.0;
-        if (int(lightA[l].x) == 0) {
+        int kind = int(lightA[l].x);
+        if (kind != 1) {
             vec3 toLight = lightA[l].yzw - x;
             dist = length(toLight);
             w = toLight / dist;
             if (lightC[l].x > 0.0) att = lightC[l].x / (dist * dist);
+            if (kind == 2) {
+                // The spot's cone: smoothstep(cos angle, cos innerangle, ω'·a), a hard edge when they are equal.
+                float e0 = lightC[l].y, e1 = lightC[l].z, ca = dot(-w, lightD[l].xyz);
+                att *= e1 > e0 ? smoothstep(e0, e1, ca) : (ca >= e0 ? 1.0 : 0.0);
+            } else if (kind == 3) {
+                // An area light drawn as its centre: its strength falls with |normal·ω| as each sample's does.
+                att *= abs(dot(lightD[l].xyz, w));
+            }
         } else {
             w = lightA[l].yzw;
             dist = INF;

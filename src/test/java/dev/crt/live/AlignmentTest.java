@@ -57,6 +57,15 @@ class AlignmentTest {
     void idAndDepthPassesAgree(Path file) throws IOException {
         Scene scene = compile(file);
         scene = scene.withSettings(scene.settings().withSize(WIDTH, HEIGHT).withSampling(1, 1));
+        String missing = notDrawnYet(scene);
+        if (missing != null) {
+            // A shape the live view does not draw yet: refused with one sentence, never drawn wrong.
+            Scene refused = scene;
+            org.assertj.core.api.Assertions.assertThatThrownBy(() -> preview.draw(refused))
+                    .isInstanceOf(UnsupportedSceneException.class).hasMessageContaining(missing);
+            table.add("| " + file.getFileName() + " | not drawn yet: it holds a " + missing + " | | | |");
+            return;
+        }
         Renderer tracer = Renderer.prepare(scene);
         int[] traced = tracer.idPass();
         double[] tracedDepth = tracer.depthPass();
@@ -71,6 +80,21 @@ class AlignmentTest {
         assertThat((double) c.agreeing / c.compared).as("id agreement of %s", file).isGreaterThanOrEqualTo(0.99);
         assertThat((double) c.depthWithin / Math.max(1, c.bothHit)).as("depth agreement of %s", file)
                 .isGreaterThanOrEqualTo(0.99);
+    }
+
+    /** The first kind in {@code scene} the live view refuses for now, or null. */
+    private static String notDrawnYet(Scene scene) {
+        java.util.ArrayDeque<dev.crt.scene.Entity> todo = new java.util.ArrayDeque<>(scene.entities());
+        while (!todo.isEmpty()) {
+            dev.crt.scene.Entity e = todo.pop();
+            if (e instanceof dev.crt.scene.Csg c) {
+                todo.push(c.left());
+                todo.push(c.right());
+            } else if (SceneConverterTest.NOT_DRAWN_YET.containsKey(e.getClass())) {
+                return e.getClass().getSimpleName();
+            }
+        }
+        return null;
     }
 
     /**

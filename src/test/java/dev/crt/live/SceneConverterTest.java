@@ -8,7 +8,10 @@ import dev.crt.geom.Aabb;
 import dev.crt.geom.Transform;
 import dev.crt.geom.Vec3;
 import dev.crt.scene.Background;
+import dev.crt.scene.AreaLight;
 import dev.crt.scene.Box;
+import dev.crt.scene.Cone;
+import dev.crt.scene.Cylinder;
 import dev.crt.scene.Csg;
 import dev.crt.scene.CsgOperation;
 import dev.crt.scene.Entity;
@@ -26,6 +29,8 @@ import dev.crt.scene.Settings;
 import dev.crt.scene.SolidBackground;
 import dev.crt.scene.SourceSpan;
 import dev.crt.scene.Sphere;
+import dev.crt.scene.SpotLight;
+import dev.crt.scene.Torus;
 import java.util.ArrayList;
 import java.util.LinkedHashSet;
 import java.util.List;
@@ -39,17 +44,31 @@ class SceneConverterTest {
     static final Box BOX = new Box(new Vec3(-1, -1, -1), new Vec3(1, 1, 1), M, Transform.IDENTITY, SourceSpan.NONE);
     static final Plane PLANE = new Plane(new Vec3(0, 1, 0), new Vec3(0, -1, 0), M, Transform.IDENTITY, SourceSpan.NONE);
 
+    /**
+     * The shapes of the second wave the live view does not draw yet (issue 9 follow-up): the
+     * converter refuses them with one sentence naming the kind, which crt preview prints with
+     * exit code 4 and the studio shows in place of the live view. Each is one class here until
+     * the shader ray-casts it; a kind in neither list fails the test below.
+     */
+    static final Map<Class<?>, Object> NOT_DRAWN_YET = Map.of(
+            Cylinder.class, new Cylinder(Vec3.ZERO, new Vec3(0, 1, 0), 1, true, M, Transform.IDENTITY, SourceSpan.NONE),
+            Cone.class, new Cone(Vec3.ZERO, new Vec3(0, 1, 0), 1, 0, true, M, Transform.IDENTITY, SourceSpan.NONE),
+            Torus.class, new Torus(Vec3.ZERO, new Vec3(0, 1, 0), 1, 0.25, M, Transform.IDENTITY, SourceSpan.NONE));
+
     /** One sample of every concrete kind the scene model has; a new kind must be added here and to the converter. */
-    static final Map<Class<?>, Object> SAMPLES = Map.of(
-            Sphere.class, SPHERE,
-            Box.class, BOX,
-            Plane.class, PLANE,
-            Csg.class, new Csg(CsgOperation.DIFFERENCE, BOX, SPHERE, Transform.IDENTITY, SourceSpan.NONE),
-            PointLight.class, new PointLight(new Vec3(0, 5, 0), Rgb.WHITE, 10, 0.1, SourceSpan.NONE),
-            ParallelLight.class, new ParallelLight(new Vec3(1, 1, 1), Vec3.ZERO, Rgb.WHITE, 0, SourceSpan.NONE),
-            SolidBackground.class, new SolidBackground(Rgb.GREY),
-            GradientBackground.class, new GradientBackground(Rgb.WHITE, Rgb.BLACK),
-            PanoramaBackground.class, new PanoramaBackground("p.png", new Picture(1, 1, new float[3]), 0));
+    static final Map<Class<?>, Object> SAMPLES = Map.ofEntries(Map.entry(
+            Sphere.class, SPHERE),
+            Map.entry(Box.class, BOX),
+            Map.entry(Plane.class, PLANE),
+            Map.entry(Csg.class, new Csg(CsgOperation.DIFFERENCE, BOX, SPHERE, Transform.IDENTITY, SourceSpan.NONE)),
+            Map.entry(PointLight.class, new PointLight(new Vec3(0, 5, 0), Rgb.WHITE, 10, 0.1, SourceSpan.NONE)),
+            Map.entry(ParallelLight.class, new ParallelLight(new Vec3(1, 1, 1), Vec3.ZERO, Rgb.WHITE, 0, SourceSpan.NONE)),
+            Map.entry(SpotLight.class, new SpotLight(new Vec3(0, 5, 0), Vec3.ZERO, 30, 20, Rgb.WHITE, 0, 0.1, SourceSpan.NONE)),
+            Map.entry(AreaLight.class, new AreaLight(new Vec3(-1, 5, -1), new Vec3(2, 0, 0), new Vec3(0, 0, 2), 4, Rgb.WHITE, 0, 0,
+                    SourceSpan.NONE)),
+            Map.entry(SolidBackground.class, new SolidBackground(Rgb.GREY)),
+            Map.entry(GradientBackground.class, new GradientBackground(Rgb.WHITE, Rgb.BLACK)),
+            Map.entry(PanoramaBackground.class, new PanoramaBackground("p.png", new Picture(1, 1, new float[3]), 0)));
 
     static Set<Class<?>> concreteKinds(Class<?> sealed) {
         Set<Class<?>> out = new LinkedHashSet<>();
@@ -75,6 +94,12 @@ class SceneConverterTest {
         kinds.addAll(concreteKinds(Background.class));
         assertThat(kinds).hasSizeGreaterThanOrEqualTo(9);
         for (Class<?> kind : kinds) {
+            if (NOT_DRAWN_YET.containsKey(kind)) {
+                Scene s = scene(List.of((Entity) NOT_DRAWN_YET.get(kind)), List.of(), Background.BLACK);
+                assertThatThrownBy(() -> SceneConverter.convert(s)).isInstanceOf(UnsupportedSceneException.class)
+                        .hasMessage("the live view cannot draw a " + kind.getSimpleName() + " yet");
+                continue;
+            }
             Object sample = SAMPLES.get(kind);
             if (sample == null) {
                 fail("the scene model has a kind the live view was not taught: " + kind.getName()
