@@ -86,6 +86,7 @@ public final class Renderer {
                             image.set(x, y, rgb[0], rgb[1], rgb[2]);
                         }
                     }
+                    monitor.tileDone(image, x0, y0, x1, y1);
                     monitor.progress(donePixels.addAndGet((long) (x1 - x0) * (y1 - y0)), total);
                 }
             };

@@ -54,6 +54,13 @@ final class ObjectBuilder {
         TYPES.put(name, new ObjectType(Set.copyOf(Arrays.asList(attributes)), build));
     }
 
+    /** Each type's attribute names, in the order of the table above. */
+    static Map<String, Set<String>> attributeNames() {
+        Map<String, Set<String>> names = new LinkedHashMap<>();
+        TYPES.forEach((type, t) -> names.put(type, t.attributes()));
+        return names;
+    }
+
     private final Evaluator evaluator;
     private final Assets assets;
 
