@@ -1,10 +1,12 @@
 package dev.crt.render;
 
 import dev.crt.image.FrameBuffer;
+import dev.crt.scene.Entity;
 import dev.crt.scene.Scene;
 import dev.crt.scene.Settings;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Optional;
 import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.atomic.AtomicLong;
@@ -20,6 +22,7 @@ public final class Renderer {
     private static final long RENDER_STACK = 256L << 20;
 
     private final Settings settings;
+    private final List<Entity> entities;
     private final SceneGeometry geometry;
     private final Lights lights;
     private final BackgroundShader background;
@@ -29,6 +32,7 @@ public final class Renderer {
     private Renderer(Scene scene) {
         long start = System.nanoTime();
         settings = scene.settings();
+        entities = scene.entities();
         geometry = new SceneGeometry(scene.entities());
         lights = new Lights(settings.lights());
         background = new BackgroundShader(settings.background(), settings.gamma());
@@ -144,6 +148,98 @@ public final class Renderer {
 
     private static int gcd(int a, int b) {
         return b == 0 ? a : gcd(b, a % b);
+    }
+
+    /**
+     * The entity seen through the centre of pixel (x, y) of the Settings' width × height, by the
+     * pinhole ray (the lens is ignored), or empty where the background shows. Safe to call from
+     * any thread, also while a render runs.
+     */
+    public Optional<Pick> pick(int x, int y) {
+        int width = settings.width(), height = settings.height();
+        if (x < 0 || y < 0 || x >= width || y >= height) return Optional.empty();
+        Tracer tracer = new Tracer(geometry, lights, background);
+        CameraRays camera = new CameraRays(settings.camera(), width, height);
+        double[] d = new double[3];
+        camera.direction(x, y, 0.5, 0.5, d);
+        if (!tracer.closestHit(camera.px, camera.py, camera.pz, d[0], d[1], d[2], Double.POSITIVE_INFINITY)) {
+            return Optional.empty();
+        }
+        int index = geometry.owner[tracer.hit.shape];
+        return Optional.of(new Pick(index, entities.get(index), tracer.hit.t));
+    }
+
+    /**
+     * The id pass: per pixel (row by row from the top), the index in the scene's entity list of the
+     * entity seen through the pixel's centre, or −1 for the background. See {@link #pick}.
+     */
+    public int[] idPass() {
+        int[] ids = new int[settings.width() * settings.height()];
+        primaryHits((i, tracer) -> ids[i] = tracer == null ? -1 : geometry.owner[tracer.hit.shape]);
+        return ids;
+    }
+
+    /**
+     * The depth pass: per pixel (row by row from the top), the distance from the camera to the
+     * surface seen through the pixel's centre, or +∞ for the background. See {@link #pick}.
+     */
+    public double[] depthPass() {
+        double[] depth = new double[settings.width() * settings.height()];
+        primaryHits((i, tracer) -> depth[i] = tracer == null ? Double.POSITIVE_INFINITY : tracer.hit.t);
+        return depth;
+    }
+
+    /** Receives pixel {@code i}'s primary hit, in {@code tracer.hit}, or null for the background. */
+    private interface HitSink {
+        void accept(int i, Tracer tracer);
+    }
+
+    /** Casts the pinhole ray through every pixel centre, on all cores, rows handed out in turn. */
+    private void primaryHits(HitSink sink) {
+        int width = settings.width(), height = settings.height();
+        CameraRays camera = new CameraRays(settings.camera(), width, height);
+        AtomicInteger nextRow = new AtomicInteger();
+        int workers = Math.max(1, Math.min(Runtime.getRuntime().availableProcessors(), height));
+        List<Thread> pool = new ArrayList<>();
+        Throwable[] failure = new Throwable[1];
+        for (int w = 0; w < workers; w++) {
+            Tracer tracer = new Tracer(geometry, lights, background);
+            Thread t = new Thread(null, () -> {
+                try {
+                    double[] d = new double[3];
+                    int y;
+                    while ((y = nextRow.getAndIncrement()) < height) {
+                        for (int x = 0; x < width; x++) {
+                            camera.direction(x, y, 0.5, 0.5, d);
+                            boolean hit = tracer.closestHit(camera.px, camera.py, camera.pz, d[0], d[1], d[2],
+                                    Double.POSITIVE_INFINITY);
+                            sink.accept(y * width + x, hit ? tracer : null);
+                        }
+                    }
+                } catch (Throwable e) {
+                    synchronized (failure) {
+                        if (failure[0] == null) failure[0] = e;
+                    }
+                }
+            }, "crt-pass-" + w, RENDER_STACK);
+            t.setDaemon(true);
+            pool.add(t);
+        }
+        pool.forEach(Thread::start);
+        boolean interrupted = false;
+        for (Thread t : pool) {
+            while (true) {
+                try {
+                    t.join();
+                    break;
+                } catch (InterruptedException e) {
+                    interrupted = true;
+                }
+            }
+        }
+        if (interrupted) Thread.currentThread().interrupt();
+        if (failure[0] instanceof RuntimeException e) throw e;
+        if (failure[0] instanceof Error e) throw e;
     }
 
     /** Counts and timings of the last render (and of {@link #prepare}). */

@@ -26,6 +26,13 @@ final class SceneGeometry {
     final int[] unbounded;
     /** Null when the bounded items are few enough to test them all. */
     final Bvh bvh;
+    /**
+     * Per shape, the index in the scene's entity list of the top-level entity it belongs to (a
+     * CSG tree's leaves all name the tree), so a hit can be traced back to the script. Read only
+     * by picking and passes, never on the render path.
+     */
+    final int[] owner;
+    private int[] owners = new int[16];
 
     SceneGeometry(List<Entity> entities) {
         // First pass, in the scene's order: every primitive flattened with its material (kept, to
@@ -35,12 +42,17 @@ final class SceneGeometry {
         Materials probeMaterials = new Materials();
         List<Entity> bounded = new ArrayList<>();
         List<Entity> infinite = new ArrayList<>();
+        // Per bounded and per unbounded entity, its index in the scene's list.
+        int[] boundedIndex = new int[16];
+        List<Integer> infiniteIndex = new ArrayList<>();
+        int index = -1;
         // Per bounded or unbounded entity, its index in firstShapes, or −1 for a CSG tree.
         int[] boundedShape = new int[16];
         List<Integer> infiniteShape = new ArrayList<>();
         double[] flat = new double[6 * 16];
         Aabb[] out = new Aabb[1];
         for (Entity e : entities) {
+            index++;
             Aabb b;
             int s = -1;
             if (e instanceof Primitive p) {
@@ -56,13 +68,16 @@ final class SceneGeometry {
                 bounded.add(e);
                 if (i == boundedShape.length) {
                     boundedShape = Arrays.copyOf(boundedShape, 2 * i);
+                    boundedIndex = Arrays.copyOf(boundedIndex, 2 * i);
                     flat = Arrays.copyOf(flat, 12 * i);
                 }
                 boundedShape[i] = s;
+                boundedIndex[i] = index;
                 BvhBuilder.put(b, flat, i);
             } else {
                 infinite.add(e);
                 infiniteShape.add(s);
+                infiniteIndex.add(index);
             }
         }
         int n = bounded.size();
@@ -77,13 +92,26 @@ final class SceneGeometry {
         // copied from the first pass rather than flattened again, which would visit the scene's
         // objects in a scattered order.
         items = new int[n];
-        for (int i = 0; i < n; i++) items[i] = place(bounded.get(order[i]), boundedShape[order[i]], firstShapes, out);
+        for (int i = 0; i < n; i++) {
+            int k = order[i];
+            items[i] = place(bounded.get(k), boundedShape[k], boundedIndex[k], firstShapes, out);
+        }
         unbounded = new int[infinite.size()];
-        for (int i = 0; i < unbounded.length; i++) unbounded[i] = place(infinite.get(i), infiniteShape.get(i), firstShapes, out);
+        for (int i = 0; i < unbounded.length; i++) {
+            unbounded[i] = place(infinite.get(i), infiniteShape.get(i), infiniteIndex.get(i), firstShapes, out);
+        }
+        owner = Arrays.copyOf(owners, shapes.count());
+        owners = null;
     }
 
-    private int place(Entity e, int first, Shapes firstShapes, Aabb[] out) {
-        if (first >= 0) return shapes.copy(firstShapes, first);
-        return -(csg.add((Csg) e, Transform.IDENTITY, shapes, q -> materials.indexOf(q.material()), out) + 1);
+    /** Flattens entity number {@code index} of the scene; the shapes it adds are recorded as its own. */
+    private int place(Entity e, int first, int index, Shapes firstShapes, Aabb[] out) {
+        int from = shapes.count();
+        int item = first >= 0 ? shapes.copy(firstShapes, first)
+                : -(csg.add((Csg) e, Transform.IDENTITY, shapes, q -> materials.indexOf(q.material()), out) + 1);
+        int to = shapes.count();
+        if (to > owners.length) owners = Arrays.copyOf(owners, Math.max(to, 2 * owners.length));
+        Arrays.fill(owners, from, to, index);
+        return item;
     }
 }
