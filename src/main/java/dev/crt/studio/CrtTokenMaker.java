@@ -4,7 +4,11 @@ import dev.crt.lang.parser.CRTLexer;
 import javax.swing.text.Segment;
 import org.antlr.v4.runtime.CharStreams;
 import org.antlr.v4.runtime.Token;
+import org.fife.ui.rsyntaxtextarea.AbstractTokenMakerFactory;
 import org.fife.ui.rsyntaxtextarea.TokenMakerBase;
+import org.fife.ui.rsyntaxtextarea.TokenMakerFactory;
+import org.fife.ui.rsyntaxtextarea.folding.CurlyFoldParser;
+import org.fife.ui.rsyntaxtextarea.folding.FoldParserManager;
 import org.fife.ui.rsyntaxtextarea.TokenTypes;
 
 /**
@@ -14,6 +18,17 @@ import org.fife.ui.rsyntaxtextarea.TokenTypes;
 public final class CrtTokenMaker extends TokenMakerBase {
     /** The syntax style name under which the editor finds this token maker. */
     public static final String STYLE = "text/crt";
+
+    static {
+        AbstractTokenMakerFactory factory = (AbstractTokenMakerFactory) TokenMakerFactory.getDefaultInstance();
+        factory.putMapping(STYLE, CrtTokenMaker.class.getName());
+        FoldParserManager.get().addFoldParserMapping(STYLE, new CurlyFoldParser());
+    }
+
+    /** Makes the editor library know the CRT style; documents call it before they are created. */
+    static void register() {
+        // The work is in the static initialiser, which runs once, on first use.
+    }
 
     @Override
     public org.fife.ui.rsyntaxtextarea.Token getTokenList(Segment text, int initialTokenType, int startOffset) {

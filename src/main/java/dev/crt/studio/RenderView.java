@@ -11,14 +11,13 @@ import java.awt.event.MouseEvent;
 import java.awt.event.MouseWheelEvent;
 import java.awt.image.BufferedImage;
 import java.util.function.BiConsumer;
-import javax.swing.JComponent;
 import javax.swing.UIManager;
 
 /**
  * Shows the picture being rendered: fitted to the panel or at a chosen zoom, dragged to pan, wheel
  * to zoom around the mouse. A click (without a drag) reports the picture pixel under the mouse.
  */
-final class RenderView extends JComponent {
+final class RenderView extends javax.swing.JPanel {
     private BufferedImage picture;
     private boolean fit = true;
     private double zoom = 1;

@@ -26,6 +26,10 @@ public final class ScriptDocument {
         default void compiled(ScriptDocument document, CompileResult result) {}
     }
 
+    static {
+        CrtTokenMaker.register();
+    }
+
     private final RSyntaxDocument text = new RSyntaxDocument(CrtTokenMaker.STYLE);
     private final List<Listener> listeners = new CopyOnWriteArrayList<>();
     private final String untitledName;

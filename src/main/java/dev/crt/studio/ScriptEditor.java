@@ -25,16 +25,12 @@ import javax.swing.event.HyperlinkEvent;
 import javax.swing.text.BadLocationException;
 import javax.swing.text.Element;
 import org.fife.ui.autocomplete.AutoCompletion;
-import org.fife.ui.rsyntaxtextarea.AbstractTokenMakerFactory;
 import org.fife.ui.rsyntaxtextarea.ErrorStrip;
 import org.fife.ui.rsyntaxtextarea.LinkGenerator;
 import org.fife.ui.rsyntaxtextarea.LinkGeneratorResult;
 import org.fife.ui.rsyntaxtextarea.RSyntaxDocument;
 import org.fife.ui.rsyntaxtextarea.RSyntaxTextArea;
 import org.fife.ui.rsyntaxtextarea.Theme;
-import org.fife.ui.rsyntaxtextarea.TokenMakerFactory;
-import org.fife.ui.rsyntaxtextarea.folding.CurlyFoldParser;
-import org.fife.ui.rsyntaxtextarea.folding.FoldParserManager;
 import org.fife.ui.rsyntaxtextarea.parser.AbstractParser;
 import org.fife.ui.rsyntaxtextarea.parser.DefaultParseResult;
 import org.fife.ui.rsyntaxtextarea.parser.DefaultParserNotice;
@@ -49,12 +45,6 @@ import org.fife.ui.rtextarea.RTextScrollPane;
  * marks; completion; go to definition.
  */
 final class ScriptEditor extends JPanel implements ScriptDocument.Listener {
-    static {
-        AbstractTokenMakerFactory factory = (AbstractTokenMakerFactory) TokenMakerFactory.getDefaultInstance();
-        factory.putMapping(CrtTokenMaker.STYLE, CrtTokenMaker.class.getName());
-        FoldParserManager.get().addFoldParserMapping(CrtTokenMaker.STYLE, new CurlyFoldParser());
-    }
-
     private static final Icon ERROR_ICON = new MarkIcon(new Color(0xD32F2F));
     private static final Icon WARNING_ICON = new MarkIcon(new Color(0xF9A825));
 
@@ -67,7 +57,8 @@ final class ScriptEditor extends JPanel implements ScriptDocument.Listener {
     ScriptEditor(ScriptDocument document) {
         super(new BorderLayout());
         this.document = document;
-        area = new RSyntaxTextArea(document.text(), null, 30, 80);
+        area = new RSyntaxTextArea(30, 80);
+        area.setDocument(document.text());
         area.setSyntaxEditingStyle(CrtTokenMaker.STYLE);
         area.setCodeFoldingEnabled(true);
         area.setBracketMatchingEnabled(true);
@@ -80,12 +71,15 @@ final class ScriptEditor extends JPanel implements ScriptDocument.Listener {
         area.setTabsEmulated(true);
         area.setAutoIndentEnabled(true);
         area.setCloseCurlyBraces(true);
+        area.setInsertPairedCharacters(false);
         area.addParser(diagnostics);
         area.setParserDelay(50);
         area.setLinkGenerator(new DefinitionLinks());
         area.getAccessibleContext().setAccessibleName("Script editor " + document.name());
         area.getAccessibleContext().setAccessibleDescription("The text of the script " + document.name());
         area.setName("editor");
+        // Plain Swing tooltips, which screen readers and test tools read, rather than the library's focusable ones.
+        area.setUseFocusableTips(false);
         ToolTipManager.sharedInstance().registerComponent(area);
         area.getInputMap().put(KeyStroke.getKeyStroke(KeyEvent.VK_F3, 0), "crt.goToDefinition");
         area.getActionMap().put("crt.goToDefinition", new AbstractAction("Go to definition") {
