@@ -278,6 +278,46 @@ class StudioGuiTest {
     }
 
     @Test
+    void renderingAScriptWithAnErrorListsItInTheConsoleAndAClickThereGoesToIt() throws IOException {
+        Path file = temp.resolve("broken.crt");
+        Files.writeString(file, "a = 1\nb = a + \"text\" * 2\nScene { Sphere { } }\n");
+        open(file);
+        onEdt(() -> area().setCaretPosition(0));
+        keys.press(KeyEvent.VK_F5);
+        String place = file.toAbsolutePath() + ":2:";
+        waitFor("the error in the console", 10, () -> studio.console().text().getText().contains(place));
+        String consoleText = onEdt(() -> studio.console().text().getText());
+        int at = consoleText.indexOf(place);
+        assertThat(onEdt(() -> studio.console().attributesAt(at)))
+                .satisfies(a -> assertThat(javax.swing.text.StyleConstants.getForeground(a)).isEqualTo(new Color(0xE53935)));
+        Point p = onEdt(() -> {
+            try {
+                Rectangle r = studio.console().text().modelToView2D(at + 3).getBounds();
+                return new Point(r.x, r.y + r.height / 2);
+            } catch (javax.swing.text.BadLocationException e) {
+                throw new IllegalStateException(e);
+            }
+        });
+        robot.click(studio.console().text(), p, MouseButton.LEFT_BUTTON, 1);
+        waitFor("the caret on line 2", 5, () -> lineOfCaret() == 2 && area().isFocusOwner());
+    }
+
+    @Test
+    void aFileChangedByAnotherProgramIsOfferedForReload() throws Exception {
+        Path file = scene("two-spheres.crt");
+        open(file);
+        String changed = Files.readString(file) + "-- changed elsewhere\n";
+        Files.writeString(file, changed);
+        Files.setLastModifiedTime(file, java.nio.file.attribute.FileTime.fromMillis(System.currentTimeMillis() + 5000));
+        org.assertj.swing.fixture.JOptionPaneFixture question = org.assertj.swing.finder.JOptionPaneFinder.findOptionPane()
+                .withTimeout(10_000).using(robot);
+        question.requireMessage(java.util.regex.Pattern.compile("(?s).*two-spheres\\.crt was changed by another program.*"));
+        question.yesButton().click();
+        waitFor("the new text in the editor", 5, () -> area().getText().equals(changed));
+        assertThat(onEdt(() -> document().isModified())).isFalse();
+    }
+
+    @Test
     void quitSavesThemeAndLayoutAndTheyComeBack() throws IOException {
         open(scene("two-spheres.crt"));
         window.menuItemWithPath("View", "Dark theme").click();
