@@ -92,6 +92,7 @@ final class ScriptEditor extends JPanel implements ScriptDocument.Listener {
         completion.install(area);
         scroll = new RTextScrollPane(area, true);
         scroll.setFoldIndicatorEnabled(true);
+        scroll.setIconRowHeaderEnabled(true);
         findBar = new FindBar(area);
         findBar.setVisible(false);
         add(findBar, BorderLayout.NORTH);
