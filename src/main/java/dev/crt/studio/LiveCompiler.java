@@ -11,6 +11,7 @@ import java.util.Map;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.Future;
+import java.util.concurrent.atomic.AtomicReference;
 import javax.swing.SwingUtilities;
 import javax.swing.Timer;
 
@@ -32,7 +33,7 @@ final class LiveCompiler implements StudioModel.Listener {
         return t;
     });
     private final Map<ScriptDocument, Timer> timers = new HashMap<>();
-    private Future<?> running;
+    private final Map<ScriptDocument, Future<?>> running = new HashMap<>();
     private long editNanos;
     private volatile long lastLatencyNanos = -1;
 
@@ -48,6 +49,8 @@ final class LiveCompiler implements StudioModel.Listener {
     public void closed(ScriptDocument d) {
         Timer timer = timers.remove(d);
         if (timer != null) timer.stop();
+        Future<?> compile = running.remove(d);
+        if (compile != null) compile.cancel(true);
     }
 
     @Override
@@ -58,23 +61,37 @@ final class LiveCompiler implements StudioModel.Listener {
         if (timer != null) timer.restart();
     }
 
-    /** Compiles {@code d} now (on the worker), replacing any compile in flight. */
+    /** Compiles {@code d} now (on the worker), replacing the compile of an older text of it still in flight. */
     void start(ScriptDocument d) {
         Timer timer = timers.get(d);
         if (timer != null) timer.stop();
-        if (running != null) running.cancel(true);
+        Future<?> previous = running.remove(d);
+        if (previous != null) previous.cancel(true);
         Source source = d.source();
         long version = d.version();
         long since = editNanos;
-        running = worker.submit(() -> {
+        AtomicReference<Future<?>> self = new AtomicReference<>();
+        Runnable compile = () -> {
             CompileResult result = CrtCompiler.compile(source, OPTIONS);
-            if (Thread.currentThread().isInterrupted()) return;
+            // An interrupt stops a compile part-way. Meant for this one (a newer text of the document
+            // replaced it), the partial result is dropped; meant for the compile before it (a cancel
+            // that came as that one finished), this text is compiled again.
+            while (Thread.interrupted()) {
+                Future<?> me = self.get();
+                if (me != null && me.isCancelled()) return;
+                result = CrtCompiler.compile(source, OPTIONS);
+            }
+            CompileResult done = result;
             SwingUtilities.invokeLater(() -> {
-                if (d.version() != version) return;
-                d.compiled(result, version);
+                if (d.version() != version || !timers.containsKey(d)) return;
+                running.remove(d);
+                d.compiled(done, version);
                 if (since != 0) lastLatencyNanos = System.nanoTime() - since;
             });
-        });
+        };
+        Future<?> submitted = worker.submit(compile);
+        self.set(submitted);
+        running.put(d, submitted);
     }
 
     /** From the last keystroke to its diagnostics in the document, for the speed figures. */

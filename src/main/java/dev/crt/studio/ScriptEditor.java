@@ -17,7 +17,6 @@ import java.util.List;
 import java.util.OptionalInt;
 import javax.swing.AbstractAction;
 import javax.swing.Icon;
-import javax.swing.JComponent;
 import javax.swing.JPanel;
 import javax.swing.KeyStroke;
 import javax.swing.ToolTipManager;
@@ -232,6 +231,4 @@ final class ScriptEditor extends JPanel implements ScriptDocument.Listener {
 
         @Override public int getIconHeight() { return 14; }
     }
-
-    static JComponent focusTarget(ScriptEditor e) { return e.area; }
 }

@@ -84,6 +84,9 @@ final class StudioWindow implements StudioModel.Listener {
     private final JLabel heapStatus = new JLabel();
     private final Map<String, Action> actions = new LinkedHashMap<>();
     private final JMenu recentMenu = new JMenu("Open recent");
+    {
+        recentMenu.setMnemonic(KeyEvent.VK_R);
+    }
     private final JCheckBoxMenuItem renderOnSaveItem = new JCheckBoxMenuItem();
     private final Map<String, JRadioButtonMenuItem> themeItems = new HashMap<>();
     private final Timer diskWatch;
@@ -253,10 +256,10 @@ final class StudioWindow implements StudioModel.Listener {
         action("complete", "Complete", ctrl(KeyEvent.VK_SPACE), () -> withEditor(this::complete));
         action("definition", "Go to definition", KeyStroke.getKeyStroke(KeyEvent.VK_F3, 0),
                 () -> withEditor(e -> e.goToDefinition(e.area().getCaretPosition())));
-        action("light", "Light theme", null, () -> setTheme(false));
-        action("dark", "Dark theme", null, () -> setTheme(true));
+        action("light", "Light theme", ctrlShift(KeyEvent.VK_L), () -> setTheme(false));
+        action("dark", "Dark theme", ctrlShift(KeyEvent.VK_D), () -> setTheme(true));
         action("toggleTheme", "Switch theme", ctrlShift(KeyEvent.VK_T), () -> setTheme(!settings.dark));
-        action("resetLayout", "Reset layout", null, this::resetLayout);
+        action("resetLayout", "Reset layout", ctrlShift(KeyEvent.VK_R), this::resetLayout);
         action("showScript", "Script", KeyStroke.getKeyStroke(KeyEvent.VK_1, InputEvent.ALT_DOWN_MASK),
                 () -> { dock.dockable("script").toFront(); focusEditor(); });
         action("showRender", "Render view", KeyStroke.getKeyStroke(KeyEvent.VK_2, InputEvent.ALT_DOWN_MASK),
@@ -268,9 +271,12 @@ final class StudioWindow implements StudioModel.Listener {
         action("zoomFit", "Fit", ctrl(KeyEvent.VK_0), renderView::zoomToFit);
         action("zoomActual", "1:1", ctrl(KeyEvent.VK_1), renderView::zoomActualSize);
         action("saveImage", "Save image as…", ctrlShift(KeyEvent.VK_E), this::saveImage);
-        action("renderOnSave", "Render on save", null, () -> settings.renderOnSave = renderOnSaveItem.isSelected());
+        action("renderOnSave", "Render on save", ctrlShift(KeyEvent.VK_F5), () -> {
+            settings.renderOnSave = !settings.renderOnSave;
+            renderOnSaveItem.setSelected(settings.renderOnSave);
+        });
         action("shortcuts", "Keyboard shortcuts", KeyStroke.getKeyStroke(KeyEvent.VK_F1, 0), this::showShortcuts);
-        action("about", "About CRT Studio", null, () -> JOptionPane.showMessageDialog(frame,
+        action("about", "About CRT Studio", KeyStroke.getKeyStroke(KeyEvent.VK_F1, InputEvent.SHIFT_DOWN_MASK), () -> JOptionPane.showMessageDialog(frame,
                 "CRT Studio: write .crt scene scripts and render them with the Cathode Ray Tracer.\nJava "
                         + System.getProperty("java.version"), "About", JOptionPane.INFORMATION_MESSAGE));
     }
@@ -294,8 +300,11 @@ final class StudioWindow implements StudioModel.Listener {
         add(view, "toggleTheme", null, "showScript", "showRender", "showConsole", null, "resetLayout");
         bar.add(view);
         JMenu render = menu("Render", KeyEvent.VK_R, "render", "cancel", null, "zoomFit", "zoomActual", null, "saveImage");
-        renderOnSaveItem.setAction(actions.get("renderOnSave"));
+        // The check box shows the setting; the action behind it toggles it, from the menu or the key.
+        renderOnSaveItem.setText("Render on save");
+        renderOnSaveItem.setAccelerator((KeyStroke) actions.get("renderOnSave").getValue(Action.ACCELERATOR_KEY));
         renderOnSaveItem.setSelected(settings.renderOnSave);
+        renderOnSaveItem.addActionListener(e -> settings.renderOnSave = renderOnSaveItem.isSelected());
         render.add(renderOnSaveItem);
         bar.add(render);
         bar.add(menu("Help", KeyEvent.VK_H, "shortcuts", "about"));
@@ -363,7 +372,8 @@ final class StudioWindow implements StudioModel.Listener {
         // The editor's own keys (undo, comment, completion, Esc for its popups) stay; the studio's
         // file, render and find keys take precedence over any default text binding.
         for (String n : new String[] {"new", "open", "save", "saveAs", "close", "quit", "find", "replace", "render",
-                "zoomFit", "zoomActual", "saveImage", "toggleTheme", "shortcuts"}) {
+                "zoomFit", "zoomActual", "saveImage", "toggleTheme", "light", "dark", "resetLayout", "renderOnSave",
+                "shortcuts", "about"}) {
             KeyStroke key = (KeyStroke) actions.get(n).getValue(Action.ACCELERATOR_KEY);
             editor.area().getInputMap().put(key, "crt." + n);
             editor.area().getActionMap().put("crt." + n, actions.get(n));
@@ -591,8 +601,11 @@ final class StudioWindow implements StudioModel.Listener {
 
     private void rebuildRecentMenu() {
         recentMenu.removeAll();
+        int n = 0;
         for (Path p : settings.recent) {
-            JMenuItem item = new JMenuItem(p.getFileName() + "  —  " + p.getParent());
+            n++;
+            JMenuItem item = new JMenuItem(n + "  " + p.getFileName() + "  —  " + p.getParent());
+            if (n <= 9) item.setMnemonic(KeyEvent.VK_0 + n);
             item.addActionListener(e -> open(p));
             recentMenu.add(item);
         }
@@ -658,7 +671,11 @@ final class StudioWindow implements StudioModel.Listener {
             int caret = e == null ? 0 : e.area().getCaretPosition();
             d.load(s.text(), d.file(), Files.getLastModifiedTime(d.file()));
             recovery.forget(d);
-            if (e != null) e.area().setCaretPosition(Math.min(caret, d.text().getLength()));
+            if (e != null) {
+                // Undo must not bring back the text the other program replaced.
+                e.area().discardAllEdits();
+                e.area().setCaretPosition(Math.min(caret, d.text().getLength()));
+            }
             console.log(ConsolePanel.Kind.INFO, "reloaded " + d.file());
         } catch (IOException ex) {
             error("cannot reload " + d.file() + ": " + ex.getMessage());

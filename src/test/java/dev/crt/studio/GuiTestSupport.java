@@ -9,7 +9,6 @@ import java.nio.file.Path;
 import java.util.concurrent.TimeUnit;
 import java.util.function.BooleanSupplier;
 import java.util.function.Supplier;
-import javax.swing.SwingUtilities;
 import org.assertj.swing.edt.GuiActionRunner;
 import org.junit.jupiter.api.Assumptions;
 
@@ -63,6 +62,4 @@ final class GuiTestSupport {
             }
         }
     }
-
-    static boolean isEdt() { return SwingUtilities.isEventDispatchThread(); }
 }
