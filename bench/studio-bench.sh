@@ -31,4 +31,4 @@ done
 
 mvn -B -q -o dependency:build-classpath -Dmdep.outputFile="$work/cp.txt" >/dev/null
 cp=$(cat "$work/cp.txt")
-java -Xss16m -Djava.util.prefs.userRoot="$work/p" -cp "target/test-classes:target/classes:$cp" dev.crt.studio.StudioBench scenes
+java -Xss16m -Dcrt.assets="$here/assets" -Djava.util.prefs.userRoot="$work/p" -cp "target/test-classes:target/classes:$cp" dev.crt.studio.StudioBench scenes

@@ -46,6 +46,8 @@ final class RenderJob {
             long totalNanos) {}
 
     private final AtomicBoolean cancelled = new AtomicBoolean();
+    private final AtomicBoolean updatePending = new AtomicBoolean();
+    private final java.util.concurrent.atomic.AtomicLong latestDone = new java.util.concurrent.atomic.AtomicLong();
     private final Thread thread;
     private final long startNanos = System.nanoTime();
     private volatile long firstPictureNanos = -1;
@@ -113,7 +115,15 @@ final class RenderJob {
                 }
 
                 @Override public void progress(long done, long all) {
-                    SwingUtilities.invokeLater(() -> listener.tilesChanged(done, all));
+                    // One update waiting on the EDT at a time, carrying the latest count: tiles finish
+                    // faster than a repaint, and a flood of events would delay the user's keys.
+                    latestDone.accumulateAndGet(done, Math::max);
+                    if (updatePending.compareAndSet(false, true)) {
+                        SwingUtilities.invokeLater(() -> {
+                            updatePending.set(false);
+                            listener.tilesChanged(latestDone.get(), all);
+                        });
+                    }
                 }
 
                 @Override public boolean isCancelled() { return cancelled.get(); }

@@ -73,6 +73,7 @@ public final class StudioBench {
                 ScriptDocument[] d = new ScriptDocument[1];
                 SwingUtilities.invokeAndWait(() -> d[0] = studio.model().open(text, scene.toAbsolutePath(), null));
                 waitUntil(() -> d[0].resultIsCurrent());
+                if (onEdt(() -> d[0].result().hasErrors())) throw new IllegalStateException(scene + " has errors: " + onEdt(() -> d[0].result().diagnostics()));
                 watchdog.reset();
                 SwingUtilities.invokeAndWait(studio::render);
                 waitUntil(() -> !studio.isRendering());
