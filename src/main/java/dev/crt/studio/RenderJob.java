@@ -90,9 +90,9 @@ final class RenderJob {
                 @Override public boolean isCancelled() { return cancelled.get(); }
             };
 
+            Renderer renderer = Renderer.prepare(scene);
             int cw = Math.max(1, (width + COARSE - 1) / COARSE), ch = Math.max(1, (height + COARSE - 1) / COARSE);
-            Scene coarseScene = scene.withSettings(settings.withSize(cw, ch).withSampling(1, 1));
-            FrameBuffer coarse = Renderer.prepare(coarseScene).render(0, stopper);
+            FrameBuffer coarse = renderer.withImage(cw, ch, 1, 1).render(0, stopper);
             for (int y = 0; y < height; y++) {
                 int cy = Math.min(ch - 1, y * ch / height);
                 for (int x = 0; x < width; x++) {
@@ -105,7 +105,6 @@ final class RenderJob {
                 listener.picture(picture, true);
             });
 
-            Renderer renderer = Renderer.prepare(scene);
             long total = (long) width * height;
             FrameBuffer image = renderer.render(0, new RenderMonitor() {
                 @Override public void tileDone(FrameBuffer fb, int x0, int y0, int x1, int y1) {

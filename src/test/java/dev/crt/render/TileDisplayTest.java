@@ -46,6 +46,19 @@ class TileDisplayTest {
     }
 
     @Test
+    void aPreviewAtAnotherSizeIsThePictureOfThatSize() {
+        CompileResult compiled = CrtCompiler.compile(Source.of("tiles.crt", SCRIPT), CompileOptions.DEFAULT);
+        Renderer full = Renderer.prepare(compiled.scene());
+        FrameBuffer preview = full.withImage(11, 6, 1, 1).render(2, RenderMonitor.NONE);
+        FrameBuffer fresh = Renderer.prepare(compiled.scene().withSettings(
+                compiled.scene().settings().withSize(11, 6).withSampling(1, 1))).render(2, RenderMonitor.NONE);
+        assertThat(preview.width()).isEqualTo(11);
+        assertThat(preview.data()).containsExactly(fresh.data());
+        // The prepared renderer itself keeps its own size.
+        assertThat(full.render(2, RenderMonitor.NONE).width()).isEqualTo(83);
+    }
+
+    @Test
     void aCancelledRenderDeliversOnlyFinishedTiles() {
         CompileResult compiled = CrtCompiler.compile(Source.of("tiles.crt", SCRIPT), CompileOptions.DEFAULT);
         Renderer renderer = Renderer.prepare(compiled.scene());

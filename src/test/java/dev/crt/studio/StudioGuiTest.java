@@ -73,8 +73,9 @@ class StudioGuiTest {
     }
 
     @AfterEach
-    void closeStudio() {
+    void closeStudio(org.junit.jupiter.api.TestInfo test) {
         longestStall = Math.max(longestStall, watchdog.longestMillis());
+        System.out.println("EDT watchdog, " + test.getDisplayName() + ": longest stall " + watchdog.longestMillis() + " ms");
         if (studio != null) {
             onEdt(() -> {
                 // Leave nothing unsaved so that quitting asks nothing.
@@ -320,8 +321,9 @@ class StudioGuiTest {
     @Test
     void quitSavesThemeAndLayoutAndTheyComeBack() throws IOException {
         open(scene("two-spheres.crt"));
-        window.menuItemWithPath("View", "Dark theme").click();
-        assertThat(onEdt(() -> studio.isDark())).isTrue();
+        keys.press(KeyEvent.VK_D, KeyEvent.VK_CONTROL, KeyEvent.VK_SHIFT);
+        waitFor("the dark theme", 5, () -> studio.isDark());
+        assertThat(onEdt(() -> javax.swing.UIManager.getLookAndFeel().getName())).containsIgnoringCase("dark");
         onEdt(() -> studio.frame().setSize(1100, 700));
         int[] exit = {-1};
         onEdt(() -> studio.onExit(c -> exit[0] = c));
