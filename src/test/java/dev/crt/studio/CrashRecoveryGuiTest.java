@@ -83,7 +83,17 @@ class CrashRecoveryGuiTest {
             JOptionPaneFixture question = JOptionPaneFinder.findOptionPane().withTimeout(15_000).using(robot);
             question.requireMessage(Pattern.compile("(?s).*crash\\.crt.*Recover.*"));
             question.yesButton().click();
-            waitFor("the recovered script", 10, () -> studio[0] != null && studio[0].model().find(script).isPresent());
+            // With no window manager a click on a dialog that is still being laid out can miss; click again then.
+            for (int i = 0; i < 3 && onEdt(() -> question.target().isShowing()); i++) {
+                robot.waitForIdle();
+                if (onEdt(() -> question.target().isShowing())) question.yesButton().click();
+            }
+            try {
+                waitFor("the recovered script", 10, () -> studio[0] != null && studio[0].model().find(script).isPresent());
+            } catch (AssertionError e) {
+                throw new AssertionError(e.getMessage() + "; open: " + onEdt(() -> studio[0] == null ? null
+                        : studio[0].model().documents().stream().map(ScriptDocument::name).toList()), e);
+            }
             ScriptDocument d = onEdt(() -> studio[0].model().find(script).orElseThrow());
             assertThat(onEdt(d::content)).isEqualTo(original + typed);
             assertThat(onEdt(d::isModified)).isTrue();

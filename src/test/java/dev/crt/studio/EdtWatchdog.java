@@ -11,7 +11,7 @@ import javax.swing.SwingUtilities;
 final class EdtWatchdog implements AutoCloseable {
     private final Thread thread;
     private volatile boolean running = true;
-    private volatile long longestNanos;
+    private final java.util.concurrent.atomic.AtomicLong longestNanos = new java.util.concurrent.atomic.AtomicLong();
 
     EdtWatchdog() {
         thread = new Thread(() -> {
@@ -24,7 +24,8 @@ final class EdtWatchdog implements AutoCloseable {
                 } catch (InvocationTargetException e) {
                     throw new IllegalStateException(e);
                 }
-                longestNanos = Math.max(longestNanos, System.nanoTime() - start);
+                long waited = System.nanoTime() - start;
+                longestNanos.accumulateAndGet(waited, Math::max);
                 try {
                     Thread.sleep(10);
                 } catch (InterruptedException e) {
@@ -36,9 +37,10 @@ final class EdtWatchdog implements AutoCloseable {
         thread.start();
     }
 
-    long longestMillis() { return longestNanos / 1_000_000; }
+    long longestMillis() { return longestNanos.get() / 1_000_000; }
 
-    void reset() { longestNanos = 0; }
+    /** Starts a new measurement (an event already waiting counts in the new one). */
+    void reset() { longestNanos.set(0); }
 
     @Override
     public void close() {
