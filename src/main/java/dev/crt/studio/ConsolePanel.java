@@ -37,7 +37,12 @@ final class ConsolePanel extends JPanel {
     private static final DateTimeFormatter TIME = DateTimeFormatter.ofPattern("HH:mm:ss");
     private static final int MAX_CHARS = 200_000;
 
-    private final JTextPane text = new JTextPane();
+    /** Lines are not wrapped: wrapping a long console makes every append lay out the whole text again. */
+    private final JTextPane text = new JTextPane() {
+        @Override public boolean getScrollableTracksViewportWidth() {
+            return getParent() == null || getUI().getPreferredSize(this).width <= getParent().getSize().width;
+        }
+    };
     private PlaceOpener opener = (f, l, c) -> {};
 
     ConsolePanel() {

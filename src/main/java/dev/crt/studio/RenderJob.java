@@ -29,7 +29,8 @@ final class RenderJob {
         /** A picture to show; render threads go on writing into it, calling {@link #tilesChanged}. */
         void picture(BufferedImage image, boolean coarse);
 
-        void tilesChanged(long donePixels, long totalPixels);
+        /** More pixels are final; {@code dirty} bounds the picture pixels written since the last call. */
+        void tilesChanged(long donePixels, long totalPixels, java.awt.Rectangle dirty);
 
         void finished(Result result);
 
@@ -48,6 +49,8 @@ final class RenderJob {
     private final AtomicBoolean cancelled = new AtomicBoolean();
     private final AtomicBoolean updatePending = new AtomicBoolean();
     private final java.util.concurrent.atomic.AtomicLong latestDone = new java.util.concurrent.atomic.AtomicLong();
+    /** Picture pixels written since the last update reached the EDT (guarded by itself). */
+    private final java.awt.Rectangle dirty = new java.awt.Rectangle();
     private final Thread thread;
     private final long startNanos = System.nanoTime();
     private volatile long firstPictureNanos = -1;
@@ -111,6 +114,10 @@ final class RenderJob {
                     for (int y = y0; y < y1; y++) {
                         for (int x = x0; x < x1; x++) pixels[y * width + x] = rgb(fb, x, y, gamma);
                     }
+                    synchronized (dirty) {
+                        if (dirty.isEmpty()) dirty.setBounds(x0, y0, x1 - x0, y1 - y0);
+                        else dirty.add(new java.awt.Rectangle(x0, y0, x1 - x0, y1 - y0));
+                    }
                 }
 
                 @Override public void progress(long done, long all) {
@@ -120,7 +127,12 @@ final class RenderJob {
                     if (updatePending.compareAndSet(false, true)) {
                         SwingUtilities.invokeLater(() -> {
                             updatePending.set(false);
-                            listener.tilesChanged(latestDone.get(), all);
+                            java.awt.Rectangle changed;
+                            synchronized (dirty) {
+                                changed = dirty.isEmpty() ? null : new java.awt.Rectangle(dirty);
+                                dirty.setBounds(0, 0, 0, 0);
+                            }
+                            listener.tilesChanged(latestDone.get(), all, changed);
                         });
                     }
                 }
@@ -129,7 +141,7 @@ final class RenderJob {
             });
             long totalNanos = System.nanoTime() - startNanos;
             SwingUtilities.invokeLater(() -> {
-                listener.tilesChanged(total, total);
+                listener.tilesChanged(total, total, null);
                 listener.finished(new Result(scene, renderer, image, picture, firstPictureNanos, totalNanos));
             });
         } catch (RenderCancelledException e) {

@@ -121,6 +121,15 @@ final class RenderView extends javax.swing.JPanel {
 
     private double originY(double z) { return fit ? (getHeight() - picture.getHeight() * z) / 2 : panY; }
 
+    /** Repaints the part of the view that shows the picture pixels in {@code r}. */
+    void repaintPicture(java.awt.Rectangle r) {
+        if (picture == null || r == null) return;
+        double z = zoom();
+        double ox = originX(z), oy = originY(z);
+        repaint((int) Math.floor(ox + r.x * z) - 1, (int) Math.floor(oy + r.y * z) - 1,
+                (int) Math.ceil(r.width * z) + 3, (int) Math.ceil(r.height * z) + 3);
+    }
+
     /** The picture pixel under a point of this component, or null outside the picture. */
     Point toPicture(int x, int y) {
         if (picture == null) return null;
@@ -146,8 +155,19 @@ final class RenderView extends javax.swing.JPanel {
         double z = zoom();
         g2.setRenderingHint(RenderingHints.KEY_INTERPOLATION, z < 1
                 ? RenderingHints.VALUE_INTERPOLATION_BILINEAR : RenderingHints.VALUE_INTERPOLATION_NEAREST_NEIGHBOR);
-        int x = (int) Math.round(originX(z)), y = (int) Math.round(originY(z));
-        g2.drawImage(picture, x, y, (int) Math.round(picture.getWidth() * z), (int) Math.round(picture.getHeight() * z), null);
+        double ox = originX(z), oy = originY(z);
+        // Only the part of the picture inside the clip is drawn: the picture is written by render
+        // threads, so Java2D uploads whatever it draws to the X server again on every paint.
+        java.awt.Rectangle clip = g2.getClipBounds();
+        if (clip == null) clip = new java.awt.Rectangle(0, 0, getWidth(), getHeight());
+        int sx0 = Math.max(0, (int) Math.floor((clip.x - ox) / z));
+        int sy0 = Math.max(0, (int) Math.floor((clip.y - oy) / z));
+        int sx1 = Math.min(picture.getWidth(), (int) Math.ceil((clip.x + clip.width - ox) / z) + 1);
+        int sy1 = Math.min(picture.getHeight(), (int) Math.ceil((clip.y + clip.height - oy) / z) + 1);
+        if (sx0 < sx1 && sy0 < sy1) {
+            g2.drawImage(picture, (int) Math.round(ox + sx0 * z), (int) Math.round(oy + sy0 * z),
+                    (int) Math.round(ox + sx1 * z), (int) Math.round(oy + sy1 * z), sx0, sy0, sx1, sy1, null);
+        }
         g2.dispose();
     }
 }

@@ -720,12 +720,12 @@ final class StudioWindow implements StudioModel.Listener {
                 renderView.show(image);
             }
 
-            @Override public void tilesChanged(long done, long total) {
+            @Override public void tilesChanged(long done, long total, java.awt.Rectangle dirty) {
                 if (job != self[0]) return;
                 progress.setValue((int) (1000 * done / Math.max(1, total)));
                 double seconds = (System.nanoTime() - self[0].startNanos()) / 1e9;
                 renderStatus.setText(String.format("rendering %s: %d%%, %.1f s", d.name(), 100 * done / Math.max(1, total), seconds));
-                renderView.repaint();
+                renderView.repaintPicture(dirty);
             }
 
             @Override public void finished(RenderJob.Result r) {
