@@ -82,11 +82,12 @@ class CrashRecoveryGuiTest {
             });
             JOptionPaneFixture question = JOptionPaneFinder.findOptionPane().withTimeout(15_000).using(robot);
             question.requireMessage(Pattern.compile("(?s).*crash\\.crt.*Recover.*"));
-            question.yesButton().click();
-            // With no window manager a click on a dialog that is still being laid out can miss; click again then.
-            for (int i = 0; i < 3 && onEdt(() -> question.target().isShowing()); i++) {
+            // The finder can return the question before its dialog is on the screen; click once it is,
+            // and again if the first click came while the dialog was still being laid out.
+            waitFor("the question on the screen", 10, () -> question.target().isShowing());
+            for (int i = 0; i < 4 && onEdt(() -> question.target().isShowing()); i++) {
+                question.yesButton().click();
                 robot.waitForIdle();
-                if (onEdt(() -> question.target().isShowing())) question.yesButton().click();
             }
             try {
                 waitFor("the recovered script", 10, () -> studio[0] != null && studio[0].model().find(script).isPresent());
