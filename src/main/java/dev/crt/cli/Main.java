@@ -12,7 +12,8 @@ import picocli.CommandLine.Command;
         mixinStandardHelpOptions = true,
         versionProvider = Main.Version.class,
         description = "CRT, the Cathode Ray Tracer: compile and render .crt scene scripts.",
-        subcommands = {CheckCommand.class, RenderCommand.class, AnimateCommand.class, StudioCommand.class,
+        subcommands = {CheckCommand.class, RenderCommand.class, AnimateCommand.class, AccuracyCommand.class,
+                PreviewCommand.class, StudioCommand.class,
                 CommandLine.HelpCommand.class},
         footer = {"", "Exit codes: 0 success, 1 the script has errors, 2 bad usage, 3 a file could not be read or written."})
 public final class Main implements Runnable {
@@ -24,7 +25,8 @@ public final class Main implements Runnable {
 
     @Override
     public void run() {
-        throw new CommandLine.ParameterException(spec.commandLine(), "a command is needed: check, render, animate or studio");
+        throw new CommandLine.ParameterException(spec.commandLine(),
+                "a command is needed: check, render, animate, accuracy, preview or studio");
     }
 
     public static void main(String[] args) {

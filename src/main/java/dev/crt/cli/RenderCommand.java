@@ -41,13 +41,17 @@ final class RenderCommand implements Callable<Integer> {
     @Mixin
     RenderOptions renderOptions;
 
+    @Mixin
+    PassOption passOption;
+
     @Override
     public Integer call() throws CliFailure {
         PrintWriter out = spec.commandLine().getOut();
         PrintWriter err = spec.commandLine().getErr();
         renderOptions.validate(spec);
         CompileOptions options = OptionChecks.compileOptions(spec, scriptOptions, timeOption.time);
-        Path target = output != null ? output : defaultOutput(sceneFile);
+        Path target = output != null ? output : passOption.defaultOutput(sceneFile);
+        PassOption.Pass pass = passOption.pass(spec, target);
         OutputFiles.checkWritableImage(target);
 
         long compileStart = System.nanoTime();
@@ -56,6 +60,7 @@ final class RenderCommand implements Callable<Integer> {
         long compileNanos = System.nanoTime() - compileStart;
         if (result.hasErrors()) return ExitCode.SCRIPT_ERROR;
         Scene scene = renderOptions.applyTo(result.scene());
+        if (pass != PassOption.Pass.COLOR) return PassFiles.renderPass(scene, pass, target, renderOptions.quiet, err);
 
         long total = (long) scene.settings().width() * scene.settings().height();
         FrameJob.Outcome outcome;

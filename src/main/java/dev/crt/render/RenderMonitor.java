@@ -10,8 +10,10 @@ public interface RenderMonitor {
     default void progress(long done, long total) {}
 
     /**
-     * The pixels of {@code image} in [x0, x1) × [y0, y1) are final. Called once per tile, from the
-     * thread that rendered it, before the progress that counts the tile; a display copies the tile out.
+     * The pixels of {@code image} in [x0, x1) × [y0, y1) have their values of this pass. Called once
+     * per tile and pass (the adaptive sampler's pilot pass, then its refinement; other samplers have
+     * one pass), from the thread that rendered it, before the progress that counts the tile; a
+     * display copies the tile out.
      */
     default void tileDone(FrameBuffer image, int x0, int y0, int x1, int y1) {}
 

@@ -169,6 +169,9 @@ final class Shapes {
         return Math.max(Math.abs(v.x()), Math.max(Math.abs(v.y()), Math.abs(v.z())));
     }
 
+    /** Whether shape {@code s} is a plane (one-sided in the 2015 shading model). */
+    boolean isPlane(int s) { return kind[s] == PLANE; }
+
     /** World bounds of shape {@code s}; infinite for planes, empty for invisible shapes. */
     Aabb bounds(int s) {
         int o = offset[s];

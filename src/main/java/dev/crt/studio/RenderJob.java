@@ -86,7 +86,7 @@ final class RenderJob {
             Scene scene = compile.scene();
             Settings settings = scene.settings();
             int width = settings.width(), height = settings.height();
-            double gamma = settings.gamma();
+            double gamma = settings.outputGamma();
             BufferedImage picture = new BufferedImage(width, height, BufferedImage.TYPE_INT_RGB);
             int[] pixels = ((DataBufferInt) picture.getRaster().getDataBuffer()).getData();
             RenderMonitor stopper = new RenderMonitor() {

@@ -832,7 +832,7 @@ final class StudioWindow implements StudioModel.Listener {
         if (!s.author().isEmpty()) text.put("Author", s.author());
         text.put("Software", "CRT Studio");
         try {
-            ImageFiles.write(r.image(), out, s.gamma(), text);
+            ImageFiles.write(r.image(), out, s.outputGamma(), text);
             console.log(ConsolePanel.Kind.INFO, "saved image " + out.toAbsolutePath());
             return true;
         } catch (IOException e) {

@@ -187,7 +187,7 @@ class StudioGuiTest {
         CompileResult compiled = CrtCompiler.compile(new Source(file.toString(), Files.readString(file), file),
                 LiveCompiler.OPTIONS);
         FrameBuffer expected = Renderer.prepare(compiled.scene()).render(1, RenderMonitor.NONE);
-        double gamma = compiled.scene().settings().gamma();
+        double gamma = compiled.scene().settings().outputGamma();
         BufferedImage shown = onEdt(() -> studio.renderView().picture());
         assertThat(shown.getWidth()).isEqualTo(160);
         for (int y = 0; y < 120; y += 7) {
