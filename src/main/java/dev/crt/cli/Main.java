@@ -13,7 +13,7 @@ import picocli.CommandLine.Command;
         versionProvider = Main.Version.class,
         description = "CRT, the Cathode Ray Tracer: compile and render .crt scene scripts.",
         subcommands = {CheckCommand.class, RenderCommand.class, AnimateCommand.class, AccuracyCommand.class,
-                PreviewCommand.class,
+                PreviewCommand.class, StudioCommand.class,
                 CommandLine.HelpCommand.class},
         footer = {"", ExitCode.HELP_LINE})
 public final class Main implements Runnable {
@@ -26,7 +26,7 @@ public final class Main implements Runnable {
     @Override
     public void run() {
         throw new CommandLine.ParameterException(spec.commandLine(),
-                "a command is needed: check, render, animate, accuracy or preview");
+                "a command is needed: check, render, animate, accuracy, preview or studio");
     }
 
     public static void main(String[] args) {

@@ -45,9 +45,27 @@ public final class Renderer {
         stats = new RenderStats(0, 0, 0, 0, buildNanos, 0);
     }
 
+    private Renderer(Renderer prepared, Settings settings) {
+        this.settings = settings;
+        entities = prepared.entities;
+        geometry = prepared.geometry;
+        lights = prepared.lights;
+        background = prepared.background;
+        buildNanos = 0;
+        stats = new RenderStats(0, 0, 0, 0, 0, 0);
+    }
+
     /** Builds what rendering {@code scene} needs (BVH and flattened primitive data). */
     public static Renderer prepare(Scene scene) {
         return new Renderer(scene);
+    }
+
+    /**
+     * This prepared scene at another image size and sampling, sharing the acceleration structure,
+     * so that a quick preview pass costs no second build. Camera, lights and background stay.
+     */
+    public Renderer withImage(int width, int height, int supersampling, int dofSamples) {
+        return new Renderer(this, settings.withSize(width, height).withSampling(supersampling, dofSamples));
     }
 
     /**
@@ -114,6 +132,7 @@ public final class Renderer {
                         }
                     }
                     if (adaptive && !second) pilots.countDown();
+                    monitor.tileDone(image, x0, y0, x1, y1);
                     monitor.progress(donePixels.addAndGet((long) (x1 - x0) * (y1 - y0)), total);
                 }
             };

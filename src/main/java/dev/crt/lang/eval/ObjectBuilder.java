@@ -74,6 +74,13 @@ final class ObjectBuilder {
     /** An area light's n is capped so that n² shadow rays per shading point stay a render, not a hang. */
     static final int MAX_AREA_SAMPLES = 256;
 
+    /** Each type's attribute names, in the order of the table above. */
+    static Map<String, Set<String>> attributeNames() {
+        Map<String, Set<String>> names = new LinkedHashMap<>();
+        TYPES.forEach((type, t) -> names.put(type, t.attributes()));
+        return names;
+    }
+
     private final Evaluator evaluator;
     private final Assets assets;
 

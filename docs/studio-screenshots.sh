@@ -1,0 +1,57 @@
+#!/usr/bin/env bash
+# Makes the screenshots of docs/studio.md again: starts the studio on a virtual X display
+# with fresh settings, drives it with real key presses and photographs the screen.
+# Needs: Xvfb, xdotool and ImageMagick's import (Debian: xvfb xdotool imagemagick).
+set -euo pipefail
+here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+out="$here/docs/images/studio"
+mkdir -p "$out"
+for tool in Xvfb xdotool import; do
+  command -v "$tool" >/dev/null 2>&1 || { echo "studio-screenshots: $tool is needed" >&2; exit 3; }
+done
+
+display=""
+for n in $(seq 150 199); do
+  if [ ! -e "/tmp/.X11-unix/X$n" ] && [ ! -e "/tmp/.X$n-lock" ]; then display=$n; break; fi
+done
+[ -n "$display" ] || { echo "studio-screenshots: no free X display" >&2; exit 1; }
+work="$(mktemp -d)"
+Xvfb ":$display" -screen 0 1280x800x24 -nolisten tcp >/dev/null 2>&1 &
+xvfb=$!
+studio=""
+cleanup() {
+  [ -n "$studio" ] && kill "$studio" 2>/dev/null || true
+  kill "$xvfb" 2>/dev/null || true
+  rm -rf "$work"
+}
+trap cleanup EXIT
+export DISPLAY=":$display"
+sleep 1
+
+# The script is a copy, so that the edits below never touch the example.
+cp "$here/scenes/dice.crt" "$work/dice.crt"
+XDG_CONFIG_HOME="$work/config" XDG_STATE_HOME="$work/state" \
+  CRT_JAVA_OPTS="-Xss16m -Djava.util.prefs.userRoot=$work/prefs" "$here/crt" studio "$work/dice.crt" &
+studio=$!
+sleep "${STUDIO_START_WAIT:-12}"
+xdotool mousemove 400 400
+shot() { sleep "$2"; import -window root "$out/$1.png"; echo "wrote docs/images/studio/$1.png"; }
+
+xdotool key F5
+shot light-render "${RENDER_WAIT:-15}"
+
+xdotool key ctrl+End
+xdotool type --delay 40 $'\nbig = Sphere { radius -> size }'
+sleep 2
+# Hover the squiggled word for its tooltip (where the fresh default layout puts line 34).
+xdotool mousemove 240 572
+shot light-error 2
+xdotool mousemove 400 300
+
+xdotool key ctrl+shift+t
+shot dark-error 3
+
+xdotool type --delay 40 $'\nScene { Box { c'
+xdotool key ctrl+space
+shot dark-completion 2
+xdotool key Escape

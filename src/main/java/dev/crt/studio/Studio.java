@@ -1,0 +1,83 @@
+package dev.crt.studio;
+
+import java.awt.AWTError;
+import java.awt.GraphicsEnvironment;
+import java.lang.reflect.InvocationTargetException;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.atomic.AtomicInteger;
+import java.util.concurrent.atomic.AtomicReference;
+import javax.swing.SwingUtilities;
+
+/** Starts the studio: the entry point {@code crt studio} calls. */
+public final class Studio {
+    private Studio() {}
+
+    /** Why the studio cannot open a window here, or null when it can. */
+    public static String whyNoDisplay() {
+        if (GraphicsEnvironment.isHeadless()) {
+            String display = System.getenv("DISPLAY");
+            return display == null || display.isBlank()
+                    ? "the studio needs a graphical display, and none is available (DISPLAY is not set)"
+                    : "the studio needs a graphical display, and Java runs headless here";
+        }
+        return null;
+    }
+
+    /**
+     * Opens the studio with {@code files} and waits until it is closed; returns the exit code.
+     * @throws NoDisplayException when no window can be opened
+     */
+    public static int run(List<Path> files, StudioPaths paths) throws NoDisplayException {
+        String why = whyNoDisplay();
+        if (why != null) throw new NoDisplayException(why);
+        CountDownLatch closed = new CountDownLatch(1);
+        AtomicInteger code = new AtomicInteger();
+        AtomicReference<Throwable> failure = new AtomicReference<>();
+        long start = System.nanoTime();
+        try {
+            SwingUtilities.invokeAndWait(() -> {
+                StudioWindow window = new StudioWindow(paths);
+                window.onExit(c -> {
+                    code.set(c);
+                    closed.countDown();
+                });
+                window.show(files);
+                long ms = (System.nanoTime() - start) / 1_000_000;
+                window.console().log(ConsolePanel.Kind.INFO, "studio ready in " + ms + " ms (" + uptime() + " ms since the JVM started)");
+            });
+        } catch (InvocationTargetException e) {
+            failure.set(e.getCause());
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            return 1;
+        } catch (AWTError e) {
+            throw new NoDisplayException("the studio cannot open a window: " + e.getMessage());
+        }
+        Throwable f = failure.get();
+        if (f instanceof AWTError || f instanceof java.awt.HeadlessException) {
+            throw new NoDisplayException("the studio cannot open a window: " + f.getMessage());
+        }
+        if (f instanceof RuntimeException r) throw r;
+        if (f instanceof Error err) throw err;
+        try {
+            closed.await();
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            return 1;
+        }
+        return code.get();
+    }
+
+    private static long uptime() {
+        return java.lang.management.ManagementFactory.getRuntimeMXBean().getUptime();
+    }
+
+    /** No window can be opened: no display, or Java runs headless. */
+    public static final class NoDisplayException extends Exception {
+        public NoDisplayException(String message) {
+            super(message);
+        }
+    }
+}

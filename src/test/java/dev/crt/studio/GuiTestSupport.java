@@ -1,0 +1,65 @@
+package dev.crt.studio;
+
+import static org.assertj.core.api.Assertions.fail;
+
+import java.awt.GraphicsEnvironment;
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.concurrent.TimeUnit;
+import java.util.function.BooleanSupplier;
+import java.util.function.Supplier;
+import org.assertj.swing.edt.GuiActionRunner;
+import org.junit.jupiter.api.Assumptions;
+
+/** What the studio's GUI tests share: the display check, a studio on temporary folders, waiting. */
+final class GuiTestSupport {
+    private GuiTestSupport() {}
+
+    /** Fails under CI without a display (GUI tests must run there); elsewhere skips with the reason. */
+    static void requireDisplay() {
+        if (!GraphicsEnvironment.isHeadless()) return;
+        String why = "the GUI tests need a display: run them under Xvfb (DISPLAY=:N), as .ci/run does";
+        if (System.getenv("CI") != null && !System.getenv("CI").isEmpty()) fail(why);
+        Assumptions.abort(why);
+    }
+
+    /** A studio whose settings and recovery folders are fresh temporary ones. */
+    static StudioWindow openStudio(Path home, java.util.List<Path> files) throws IOException {
+        StudioPaths paths = paths(home);
+        return GuiActionRunner.execute(() -> {
+            StudioWindow w = new StudioWindow(paths);
+            w.show(files);
+            return w;
+        });
+    }
+
+    static StudioPaths paths(Path home) throws IOException {
+        Files.createDirectories(home);
+        return new StudioPaths(home.resolve("config").resolve("crt"), home.resolve("state").resolve("crt").resolve("recovery"));
+    }
+
+    static <T> T onEdt(Supplier<T> s) {
+        return GuiActionRunner.execute(s::get);
+    }
+
+    static void onEdt(Runnable r) {
+        GuiActionRunner.execute(r::run);
+    }
+
+    /** Waits until {@code condition} (checked on the EDT) holds, or fails after {@code seconds}. */
+    static void waitFor(String what, double seconds, BooleanSupplier condition) {
+        long end = System.nanoTime() + (long) (seconds * 1e9);
+        while (true) {
+            boolean ok = GuiActionRunner.execute(condition::getAsBoolean);
+            if (ok) return;
+            if (System.nanoTime() > end) fail("waited " + seconds + " s for " + what);
+            try {
+                TimeUnit.MILLISECONDS.sleep(20);
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+                fail("interrupted while waiting for " + what);
+            }
+        }
+    }
+}
