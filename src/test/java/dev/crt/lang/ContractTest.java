@@ -205,7 +205,11 @@ class ContractTest {
             String sample = "f = Macro (max) { i = 0\n"
                     + "while (i < max) { sphere1 <translate vec3(i*1.0, 0.0, 0.0)>  i = i - 1 } }\n"
                     + "sphere1 = Sphere { }\nScene { f(3) }\n";
-            Diagnostic d = Scripts.compile(sample).diagnostics().get(0);
+            // A time budget well beyond what filling 96 MB takes, so that on a loaded machine the
+            // memory, which this test is about, still runs out before the clock does.
+            CompileOptions options = new CompileOptions(0, java.util.List.of(), CompileOptions.DEFAULT_LOOP_BUDGET,
+                    java.time.Duration.ofSeconds(120));
+            Diagnostic d = CrtCompiler.compile(Source.of("test.crt", sample), options).diagnostics().get(0);
             System.out.println(d.span().line() + ":" + d.span().column() + " " + d.message());
         }
     }
