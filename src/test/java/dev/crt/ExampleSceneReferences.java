@@ -68,9 +68,12 @@ final class ExampleSceneReferences {
         return rgb;
     }
 
+    /** Writes the stored picture of every script that has none; {@code --all} writes them all again. */
     public static void main(String[] args) throws IOException {
         Files.createDirectories(FOLDER);
+        boolean all = args.length > 0 && args[0].equals("--all");
         for (Path script : scripts()) {
+            if (!all && Files.exists(referenceOf(script))) continue;
             CompileResult r = compile(script);
             if (r.hasErrors()) throw new IllegalStateException(script + ": " + r.diagnostics());
             ImageFiles.write(render(r.scene()), referenceOf(script), 1, Map.of());
