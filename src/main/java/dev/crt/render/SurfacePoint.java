@@ -8,6 +8,9 @@ package dev.crt.render;
 final class SurfacePoint {
     double px, py, pz;
     double nx, ny, nz;
+    /** Whether (snx, sny, snz) is a shading normal apart from the geometric one (smooth meshes). */
+    boolean shaded;
+    double snx, sny, snz;
     double u, v;
     double dpdux, dpduy, dpduz;
     double dpdvx, dpdvy, dpdvz;

@@ -89,6 +89,15 @@ final class Tracer {
         double dn = dx * gx + dy * gy + dz * gz;
         boolean entering = dn < 0;
         double nx = entering ? gx : -gx, ny = entering ? gy : -gy, nz = entering ? gz : -gz;
+        // The shading normal (interpolated on smooth meshes, else the geometric one), turned to
+        // the ray's side; the geometric normal keeps deciding entering and the offsets.
+        double snx = nx, sny = ny, snz = nz;
+        if (surface.shaded) {
+            double sign = surface.snx * nx + surface.sny * ny + surface.snz * nz < 0 ? -1 : 1;
+            snx = sign * surface.snx;
+            sny = sign * surface.sny;
+            snz = sign * surface.snz;
+        }
         double delta = OFFSET * Math.max(Math.max(Math.abs(px), Math.abs(py)), Math.max(Math.abs(pz), shapes.scale[s]));
         int m = shapes.material[s] * Materials.STRIDE;
         double[] mat = materials;
@@ -96,14 +105,14 @@ final class Tracer {
         double kr = mat[m + Materials.REFLECTIVITY];
         double local = 1 - kt;
         if (local != 0) {
-            shadeLocal(m, px, py, pz, nx, ny, nz, -dx, -dy, -dz, delta);
+            shadeLocal(m, px, py, pz, nx, ny, nz, snx, sny, snz, -dx, -dy, -dz, delta);
             accR += wr * local * colour[0];
             accG += wg * local * colour[1];
             accB += wb * local * colour[2];
         }
         if (depth == 0) return;
-        double dDotN = dx * nx + dy * ny + dz * nz;
-        double rdx = dx - 2 * dDotN * nx, rdy = dy - 2 * dDotN * ny, rdz = dz - 2 * dDotN * nz;
+        double dDotN = dx * snx + dy * sny + dz * snz;
+        double rdx = dx - 2 * dDotN * snx, rdy = dy - 2 * dDotN * sny, rdz = dz - 2 * dDotN * snz;
         if (kr > 0) {
             reflectedRays++;
             trace(px + delta * nx, py + delta * ny, pz + delta * nz, rdx, rdy, rdz, depth - 1, wr * kr, wg * kr, wb * kr);
@@ -118,17 +127,18 @@ final class Tracer {
             } else {
                 double c = eta * cosI - Math.sqrt(k);
                 trace(px - delta * nx, py - delta * ny, pz - delta * nz,
-                        eta * dx + c * nx, eta * dy + c * ny, eta * dz + c * nz, depth - 1, wr * kt, wg * kt, wb * kt);
+                        eta * dx + c * snx, eta * dy + c * sny, eta * dz + c * snz, depth - 1, wr * kt, wg * kt, wb * kt);
             }
         }
     }
 
     /**
      * E + Σℓ aℓ(Cℓ⊙C) + Sℓ·Aℓ·(kd·max(0,N·ω)(Cℓ⊙C) + ks·max(0,R·V)^n·Cℓ) into {@code colour}. A light
-     * whose diffuse and specular terms are both zero here casts no shadow ray.
+     * whose diffuse and specular terms are both zero here casts no shadow ray. N is the shading
+     * normal (n); shadow rays start off the surface along the geometric normal (g).
      */
-    private void shadeLocal(int m, double px, double py, double pz, double nx, double ny, double nz,
-            double vx, double vy, double vz, double delta) {
+    private void shadeLocal(int m, double px, double py, double pz, double gx, double gy, double gz,
+            double nx, double ny, double nz, double vx, double vy, double vz, double delta) {
         double[] mat = materials;
         double cr = mat[m + Materials.R], cg = mat[m + Materials.G], cb = mat[m + Materials.B];
         double kd = mat[m + Materials.DIFFUSE], ks = mat[m + Materials.SPECULAR];
@@ -166,7 +176,7 @@ final class Tracer {
             }
             if (diffuse == 0 && specular == 0) continue;
             double side = nw > 0 ? delta : -delta;
-            double ox = px + side * nx, oy = py + side * ny, oz = pz + side * nz;
+            double ox = px + side * gx, oy = py + side * gy, oz = pz + side * gz;
             double s;
             if (l.parallel[i]) {
                 s = transmittance(ox, oy, oz, wx, wy, wz, dist, i);
