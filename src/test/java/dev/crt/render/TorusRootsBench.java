@@ -19,7 +19,7 @@ import java.util.SplittableRandom;
  * reference root (one not within the tolerance of another, i.e. not half of a tangent pair too
  * close to matter) or returns a root with no reference root within the tolerance, 1e-7 of the
  * torus's size. Cost: nanoseconds per ray of the production path (move to the closest approach,
- * form the quartic, solve), the best of three passes over the same rays.
+ * form the quartic, solve), the best of seven passes over the same rays.
  *
  * <pre>mvn -B -q -o test-compile && java -cp target/classes:target/test-classes dev.crt.render.TorusRootsBench [rays per family] [csv]</pre>
  */
@@ -92,7 +92,7 @@ public final class TorusRootsBench {
         double best = Double.POSITIVE_INFINITY;
         double[] out = new double[8];
         double sink = 0;
-        for (int pass = 0; pass < 3; pass++) {
+        for (int pass = 0; pass < 7; pass++) {
             long t0 = System.nanoTime();
             for (Case c : cases) sink += solve(method, c, out);
             best = Math.min(best, (System.nanoTime() - t0) / (double) cases.size());
