@@ -50,6 +50,10 @@ final class CheckCommand implements Callable<Integer> {
             }
             CompileResult result = ScriptCompilation.compile(source, options, err);
             out.println(summary(file, result));
+            if (!result.hasErrors() && ShadingAdvice.looksLike2015(result.scene())) {
+                err.println(ShadingAdvice.note(file));
+                err.flush();
+            }
             if (result.hasErrors()) exit = Math.max(exit, ExitCode.SCRIPT_ERROR);
         }
         out.flush();

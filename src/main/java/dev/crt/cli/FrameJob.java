@@ -30,7 +30,7 @@ final class FrameJob {
         FrameBuffer image = renderer.render(threads, monitor);
         long start = System.nanoTime();
         try {
-            ImageFiles.write(image, out, scene.settings().gamma(), textChunks(scene.settings()));
+            ImageFiles.write(image, out, scene.settings().outputGamma(), textChunks(scene.settings()));
         } catch (IOException e) {
             // ImageFiles' messages already say "cannot write OUT: why".
             throw new CliFailure(ExitCode.FILE_ERROR, ScriptCompilation.plain(e));

@@ -12,7 +12,7 @@ import picocli.CommandLine.Command;
         mixinStandardHelpOptions = true,
         versionProvider = Main.Version.class,
         description = "CRT, the Cathode Ray Tracer: compile and render .crt scene scripts.",
-        subcommands = {CheckCommand.class, RenderCommand.class, AnimateCommand.class,
+        subcommands = {CheckCommand.class, RenderCommand.class, AnimateCommand.class, AccuracyCommand.class,
                 CommandLine.HelpCommand.class},
         footer = {"", "Exit codes: 0 success, 1 the script has errors, 2 bad usage, 3 a file could not be read or written."})
 public final class Main implements Runnable {
@@ -24,7 +24,7 @@ public final class Main implements Runnable {
 
     @Override
     public void run() {
-        throw new CommandLine.ParameterException(spec.commandLine(), "a command is needed: check, render or animate");
+        throw new CommandLine.ParameterException(spec.commandLine(), "a command is needed: check, render, animate or accuracy");
     }
 
     public static void main(String[] args) {

@@ -1,9 +1,12 @@
 package dev.crt.cli;
 
+import dev.crt.scene.Sampler;
 import dev.crt.scene.Scene;
 import dev.crt.scene.Settings;
+import dev.crt.scene.Shading;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
+import picocli.CommandLine.ParameterException;
 
 /** Options shared by commands that render: image size, sampling, threads and reporting. */
 final class RenderOptions {
@@ -18,6 +21,18 @@ final class RenderOptions {
 
     @Option(names = "--dof-samples", paramLabel = "N", description = "Lens samples per pixel sample (overrides Settings).")
     Integer dofSamples;
+
+    @Option(names = "--sampler", paramLabel = "KIND",
+            description = "Pixel samples: grid, jittered, sobol or adaptive (overrides Settings).")
+    String sampler;
+
+    @Option(names = "--noise", paramLabel = "LEVELS",
+            description = "The adaptive sampler's target: standard error of a pixel's mean, in 8-bit levels (default: 0.5).")
+    Double noise;
+
+    @Option(names = "--shading", paramLabel = "MODEL",
+            description = "crt (CRT's model) or original (the look of CRT 2015's scenes); overrides Settings.")
+    String shading;
 
     @Option(names = "--threads", paramLabel = "N", description = "Render threads; 0 uses every core (default: ${DEFAULT-VALUE}).")
     int threads = 0;
@@ -35,6 +50,16 @@ final class RenderOptions {
         OptionChecks.requireAtLeast(spec, supersampling, 1, "--supersampling");
         OptionChecks.requireAtLeast(spec, dofSamples, 1, "--dof-samples");
         OptionChecks.requireAtLeast(spec, threads, 0, "--threads");
+        if (sampler != null && Sampler.of(sampler).isEmpty()) {
+            throw new ParameterException(spec.commandLine(),
+                    "--sampler must be grid, jittered, sobol or adaptive, not '" + sampler + "'");
+        }
+        if (shading != null && Shading.of(shading).isEmpty()) {
+            throw new ParameterException(spec.commandLine(), "--shading must be crt or original, not '" + shading + "'");
+        }
+        if (noise != null && !(noise > 0 && noise < Double.POSITIVE_INFINITY)) {
+            throw new ParameterException(spec.commandLine(), "--noise must be a positive number of 8-bit levels, not " + noise);
+        }
     }
 
     /** The scene with the command line's values in place of its Settings'. */
@@ -43,6 +68,8 @@ final class RenderOptions {
         s = s.withSize(width != null ? width : s.width(), height != null ? height : s.height());
         s = s.withSampling(supersampling != null ? supersampling : s.supersampling(),
                 dofSamples != null ? dofSamples : s.dofSamples());
+        s = s.withSampler(sampler != null ? Sampler.of(sampler).orElseThrow() : s.sampler(), noise != null ? noise : s.noise());
+        if (shading != null) s = s.withShading(Shading.of(shading).orElseThrow());
         return scene.withSettings(s);
     }
 }

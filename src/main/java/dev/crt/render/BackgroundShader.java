@@ -9,10 +9,11 @@ import dev.crt.scene.SolidBackground;
 /**
  * The colour of rays that hit nothing: a solid colour, a horizon-to-sky gradient by elevation, or an
  * equirectangular panorama sampled bilinearly (wrapping in u, clamped in v) from a linear-light copy
- * of its texels made once.
+ * of its texels made once. The 2015 model maps gradients and panoramas its own way (linearly in
+ * the direction's height, see {@link #BackgroundShader(Background, double, boolean)}).
  */
 final class BackgroundShader {
-    private static final int SOLID = 0, GRADIENT = 1, PANORAMA = 2;
+    private static final int SOLID = 0, GRADIENT = 1, PANORAMA = 2, GRADIENT_2015 = 3, PANORAMA_2015 = 4;
 
     private final int kind;
     private final double r0, g0, b0, r1, g1, b1;
@@ -21,6 +22,16 @@ final class BackgroundShader {
     private final double angle;
 
     BackgroundShader(Background background, double gamma) {
+        this(background, gamma, false);
+    }
+
+    /**
+     * A background shader; {@code original} gives the 2015 program's mappings: the gradient
+     * horizon·(1 − |D.y|) + sky·|D.y|, and the panorama at u = ((angle + atan2(−D.x, D.z) + π)
+     * mod 2π)/2π, v = D.y/2 + 1/2, image position ((1 − u)·width, (1 − v)·height), bilinear and
+     * wrapping both ways, texels as stored (no gamma).
+     */
+    BackgroundShader(Background background, double gamma, boolean original) {
         double[] c = new double[6];
         float[] tex = null;
         int w = 0, h = 0;
@@ -31,7 +42,7 @@ final class BackgroundShader {
             c[1] = s.color().g();
             c[2] = s.color().b();
         } else if (background instanceof GradientBackground g) {
-            kind = GRADIENT;
+            kind = original ? GRADIENT_2015 : GRADIENT;
             c[0] = g.horizon().r();
             c[1] = g.horizon().g();
             c[2] = g.horizon().b();
@@ -40,12 +51,12 @@ final class BackgroundShader {
             c[5] = g.sky().b();
         } else {
             PanoramaBackground p = (PanoramaBackground) background;
-            kind = PANORAMA;
+            kind = original ? PANORAMA_2015 : PANORAMA;
             Picture pic = p.image();
             w = pic.width();
             h = pic.height();
             tex = pic.rgb().clone();
-            if (gamma != 1) {
+            if (gamma != 1 && !original) {
                 for (int i = 0; i < tex.length; i++) tex[i] = (float) srgbToLinear(tex[i]);
             }
             ang = p.angle();
@@ -83,7 +94,31 @@ final class BackgroundShader {
                 out[1] = (1 - e) * g0 + e * g1;
                 out[2] = (1 - e) * b0 + e * b1;
             }
-            default -> panorama(dx, dy, dz, out);
+            case PANORAMA -> panorama(dx, dy, dz, out);
+            case GRADIENT_2015 -> {
+                double e = Math.abs(dy / Math.sqrt(dx * dx + dy * dy + dz * dz));
+                out[0] = (1 - e) * r0 + e * r1;
+                out[1] = (1 - e) * g0 + e * g1;
+                out[2] = (1 - e) * b0 + e * b1;
+            }
+            default -> panorama2015(dx, dy, dz, out);
+        }
+    }
+
+    private void panorama2015(double dx, double dy, double dz, double[] out) {
+        double len = Math.sqrt(dx * dx + dy * dy + dz * dz);
+        double a = (angle + Math.atan2(-dx / len, dz / len) + Math.PI) % (2 * Math.PI);
+        if (a < 0) a += 2 * Math.PI;
+        double u = a / (2 * Math.PI), v = dy / len / 2 + 0.5;
+        double x = (1 - u) * texWidth, y = (1 - v) * texHeight;
+        double fx = Math.floor(x), fy = Math.floor(y);
+        double ax = x - fx, ay = y - fy;
+        int x0 = Math.floorMod((int) fx, texWidth), x1 = (x0 + 1) % texWidth;
+        int y0 = Math.floorMod((int) fy, texHeight), y1 = (y0 + 1) % texHeight;
+        for (int c = 0; c < 3; c++) {
+            double top = (1 - ax) * texels[(y0 * texWidth + x0) * 3 + c] + ax * texels[(y0 * texWidth + x1) * 3 + c];
+            double bottom = (1 - ax) * texels[(y1 * texWidth + x0) * 3 + c] + ax * texels[(y1 * texWidth + x1) * 3 + c];
+            out[c] = (1 - ay) * top + ay * bottom;
         }
     }
 

@@ -4,14 +4,14 @@ import dev.crt.scene.Material;
 import java.util.Arrays;
 
 /**
- * The distinct materials of a scene as one flat array, twelve doubles each. Materials are told
+ * The distinct materials of a scene as one flat array, thirteen doubles each. Materials are told
  * apart by their values, as Material's equals does, through a hash table of indices into the
  * array itself: a scene with a million materials costs no object per material.
  */
 final class Materials {
-    static final int STRIDE = 12;
+    static final int STRIDE = 13;
     static final int R = 0, G = 1, B = 2, DIFFUSE = 3, SPECULAR = 4, SHININESS = 5, REFLECTIVITY = 6,
-            TRANSPARENCY = 7, IOR = 8, ER = 9, EG = 10, EB = 11;
+            TRANSPARENCY = 7, IOR = 8, ER = 9, EG = 10, EB = 11, ORIGINAL_DIFFUSE = 12;
 
     double[] data = new double[STRIDE * 8];
     private int count;
@@ -38,6 +38,7 @@ final class Materials {
         v[ER] = m.emission().r();
         v[EG] = m.emission().g();
         v[EB] = m.emission().b();
+        v[ORIGINAL_DIFFUSE] = m.originalDiffuse();
         int mask = table.length - 1;
         int slot = hash(v, 0) & mask;
         int k;

@@ -9,8 +9,14 @@ final class PixelRandom {
 
     private long state;
 
-    void seed(int i, int j) {
-        state = mix(SCENE_SEED ^ mix(((long) j << 32) | (i & 0xffffffffL)));
+    /** Seeds the generator for pixel (i, j) of a scene with seed {@code sceneSeed} (0: wave 1's sequence). */
+    void seed(int i, int j, long sceneSeed) {
+        state = pixelHash(i, j, sceneSeed);
+    }
+
+    /** A well-mixed 64-bit value from a pixel's coordinates and the scene seed. */
+    static long pixelHash(int i, int j, long sceneSeed) {
+        return mix((SCENE_SEED ^ sceneSeed) ^ mix(((long) j << 32) | (i & 0xffffffffL)));
     }
 
     /** Uniform in [0, 1). */
@@ -19,7 +25,7 @@ final class PixelRandom {
         return (mix(state) >>> 11) * 0x1.0p-53;
     }
 
-    private static long mix(long z) {
+    static long mix(long z) {
         z = (z ^ (z >>> 30)) * 0xBF58476D1CE4E5B9L;
         z = (z ^ (z >>> 27)) * 0x94D049BB133111EBL;
         return z ^ (z >>> 31);

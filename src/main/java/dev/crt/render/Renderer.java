@@ -2,11 +2,15 @@ package dev.crt.render;
 
 import dev.crt.image.FrameBuffer;
 import dev.crt.scene.Entity;
+import dev.crt.scene.Sampler;
 import dev.crt.scene.Scene;
 import dev.crt.scene.Settings;
+import dev.crt.scene.Shading;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Optional;
+import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.atomic.AtomicLong;
@@ -35,7 +39,8 @@ public final class Renderer {
         entities = scene.entities();
         geometry = new SceneGeometry(scene.entities());
         lights = new Lights(settings.lights());
-        background = new BackgroundShader(settings.background(), settings.gamma());
+        background = new BackgroundShader(settings.effectiveBackground(), settings.outputGamma(),
+                settings.shading() == Shading.ORIGINAL);
         buildNanos = System.nanoTime() - start;
         stats = new RenderStats(0, 0, 0, 0, buildNanos, 0);
     }
@@ -58,11 +63,17 @@ public final class Renderer {
         int tilesX = (width + TILE - 1) / TILE, tilesY = (height + TILE - 1) / TILE;
         int tiles = tilesX * tilesY;
         int workers = Math.max(1, Math.min(threads > 0 ? threads : Runtime.getRuntime().availableProcessors(), tiles));
-        AtomicInteger nextTile = new AtomicInteger();
+        // The adaptive sampler renders twice: a pilot pass over every pixel, then, once every
+        // pilot is in (a pixel's second pass reads its neighbours'), the pixels that need more.
+        boolean adaptive = settings.sampler() == Sampler.ADAPTIVE;
+        int passes = adaptive ? 2 : 1;
+        float[] pilotVariance = adaptive ? new float[width * height] : null;
+        CountDownLatch pilots = new CountDownLatch(adaptive ? tiles : 0);
+        AtomicInteger nextTask = new AtomicInteger();
         int stride = tileStride(tiles);
         AtomicLong donePixels = new AtomicLong();
         AtomicBoolean cancelled = new AtomicBoolean();
-        long total = (long) width * height;
+        long total = (long) width * height * passes;
         List<Tracer> tracers = new ArrayList<>();
         List<Thread> pool = new ArrayList<>();
         Throwable[] failure = new Throwable[1];
@@ -71,13 +82,17 @@ public final class Renderer {
         for (int w = 0; w < workers; w++) {
             Tracer tracer = new Tracer(geometry, lights, background);
             tracers.add(tracer);
-            PixelSampler sampler = new PixelSampler(tracer, camera, settings.supersampling(), settings.dofSamples(),
-                    settings.recursionDepth());
+            OriginalShading original = settings.shading() == Shading.ORIGINAL
+                    ? new OriginalShading(tracer, geometry, lights, background) : null;
+            PixelSampler sampler = new PixelSampler(tracer, original, camera, settings, pilotVariance);
             Runnable work = () -> {
                 double[] rgb = new double[3];
-                int tile;
-                while (!cancelled.get() && (tile = nextTile.getAndIncrement()) < tiles) {
-                    tile = (int) ((long) tile * stride % tiles);
+                float[] pilot = new float[3];
+                int task;
+                while (!cancelled.get() && (task = nextTask.getAndIncrement()) < tiles * passes) {
+                    boolean second = task >= tiles;
+                    if (second && !awaitPilots(pilots, cancelled, monitor)) return;
+                    int tile = (int) ((long) (task % tiles) * stride % tiles);
                     int x0 = (tile % tilesX) * TILE, y0 = (tile / tilesX) * TILE;
                     int x1 = Math.min(x0 + TILE, width), y1 = Math.min(y0 + TILE, height);
                     for (int y = y0; y < y1; y++) {
@@ -86,10 +101,16 @@ public final class Renderer {
                             return;
                         }
                         for (int x = x0; x < x1; x++) {
-                            sampler.pixel(x, y, rgb);
+                            if (second) {
+                                for (int c = 0; c < 3; c++) pilot[c] = image.get(x, y, c);
+                                if (!sampler.refine(x, y, pilot, rgb)) continue;
+                            } else {
+                                sampler.pixel(x, y, rgb);
+                            }
                             image.set(x, y, rgb[0], rgb[1], rgb[2]);
                         }
                     }
+                    if (adaptive && !second) pilots.countDown();
                     monitor.progress(donePixels.addAndGet((long) (x1 - x0) * (y1 - y0)), total);
                 }
             };
@@ -132,6 +153,23 @@ public final class Renderer {
         if (failure[0] instanceof Error e) throw e;
         if (cancelled.get()) throw new RenderCancelledException();
         return image;
+    }
+
+    /** Waits for every pilot tile; false when the render is cancelled meanwhile. */
+    private static boolean awaitPilots(CountDownLatch pilots, AtomicBoolean cancelled, RenderMonitor monitor) {
+        while (true) {
+            if (cancelled.get() || monitor.isCancelled()) {
+                cancelled.set(true);
+                return false;
+            }
+            try {
+                if (pilots.await(20, TimeUnit.MILLISECONDS)) return true;
+            } catch (InterruptedException e) {
+                cancelled.set(true);
+                Thread.currentThread().interrupt();
+                return false;
+            }
+        }
     }
 
     /**

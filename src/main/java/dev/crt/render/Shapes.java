@@ -147,6 +147,9 @@ final class Shapes {
         return new IllegalStateException("shape kind " + kind[s] + " has no entry in this switch");
     }
 
+    /** Whether shape {@code s} is a plane (one-sided in the 2015 shading model). */
+    boolean isPlane(int s) { return kind[s] == PLANE; }
+
     /** World bounds of shape {@code s}; infinite for planes, empty for invisible shapes. */
     Aabb bounds(int s) {
         int o = offset[s];

@@ -20,7 +20,7 @@ class CameraAndBackgroundTest {
         Camera c = new Camera(v(1, 2, -6), v(0, 0.5, 1), 50, 0, 250, 4.5, ApertureShape.HEXAGON, SourceSpan.NONE);
         CameraRays cam = new CameraRays(c, 64, 48);
         PixelRandom rnd = new PixelRandom();
-        rnd.seed(5, 7);
+        rnd.seed(5, 7, 0);
         double[] d0 = new double[3], o = new double[3], d = new double[3], lens = new double[2];
         cam.direction(5, 7, 0.5, 0.5, d0);
         Vec3 f = c.pointing().minus(c.position()).normalize();

@@ -174,7 +174,8 @@ final class ObjectBuilder {
                 a.number("reflectivity", d.reflectivity(), Range.UNIT),
                 a.number("transparency", d.transparency(), Range.UNIT),
                 a.number("ior", d.ior(), Range.POSITIVE),
-                a.color("emission", d.emission())));
+                a.color("emission", d.emission()),
+                a.has("diffuse")));
     }
 
     private Value sphere(Attributes a) {

@@ -6,18 +6,23 @@ import dev.crt.lang.value.Value;
 import dev.crt.scene.Background;
 import dev.crt.scene.Camera;
 import dev.crt.scene.Light;
+import dev.crt.scene.Sampler;
 import dev.crt.scene.Settings;
+import dev.crt.scene.Shading;
 import dev.crt.scene.SourceSpan;
 import java.util.ArrayList;
+import java.util.HashSet;
 import java.util.List;
+import java.util.Optional;
 import java.util.Set;
 
 /** The settings so far: every Settings block overrides the attributes it gives. */
 final class SettingsState {
-    static final Set<String> ATTRIBUTES = Set.of("title", "author", "date", "notes", "lights", "camera",
-            "background", "supersampling", "dofsamples", "recursiondepth", "gamma", "width", "height");
+    static final Set<String> ATTRIBUTES = Settings.ATTRIBUTES;
 
     private Settings current = Settings.DEFAULT;
+    /** The attributes the script's Settings blocks have given so far. */
+    private final Set<String> given = new HashSet<>();
     private boolean hasCamera;
     private SourceSpan firstBlock;
 
@@ -37,10 +42,32 @@ final class SettingsState {
         double gamma = a.number("gamma", s.gamma(), Attributes.Range.POSITIVE);
         int width = a.integer("width", s.width(), 1);
         int height = a.integer("height", s.height(), 1);
+        Sampler sampler = s.sampler();
+        if (a.has("sampler")) {
+            String word = a.string("sampler", sampler.word());
+            Optional<Sampler> named = Sampler.of(word);
+            if (named.isPresent()) {
+                sampler = named.get();
+            } else {
+                a.error("sampler", "sampler must be " + Sampler.words() + ", got \"" + word + "\"");
+            }
+        }
+        long seed = a.integer("seed", (int) s.seed(), 0);
+        Shading shading = s.shading();
+        if (a.has("shading")) {
+            String word = a.string("shading", shading.word());
+            Optional<Shading> named = Shading.of(word);
+            if (named.isPresent()) {
+                shading = named.get();
+            } else {
+                a.error("shading", "shading must be \"crt\" or \"original\", got \"" + word + "\"");
+            }
+        }
+        given.addAll(a.given().keySet());
         a.finish();
         hasCamera |= a.has("camera");
         current = new Settings(title, author, date, notes, lights, camera, background, supersampling, dofSamples,
-                recursionDepth, gamma, width, height);
+                recursionDepth, gamma, width, height, sampler, seed, s.noise(), shading, given);
     }
 
     private static List<Light> lights(Attributes a) {
