@@ -105,7 +105,11 @@ final class Tracer {
         double kr = mat[m + Materials.REFLECTIVITY];
         double local = 1 - kt;
         if (local != 0) {
-            shadeLocal(m, px, py, pz, nx, ny, nz, snx, sny, snz, -dx, -dy, -dz, delta);
+            if (surface.shaded) {
+                shadeLocal(m, surface.lx, surface.ly, surface.lz, nx, ny, nz, snx, sny, snz, -dx, -dy, -dz, delta);
+            } else {
+                shadeLocal(m, px, py, pz, nx, ny, nz, snx, sny, snz, -dx, -dy, -dz, delta);
+            }
             accR += wr * local * colour[0];
             accG += wg * local * colour[1];
             accB += wb * local * colour[2];

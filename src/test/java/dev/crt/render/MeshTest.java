@@ -107,4 +107,34 @@ class MeshTest {
                 sphere(v(0, 6, 0), 1, M)));
         assertThat(g.shapes.meshes).hasSize(1);
     }
+
+    /**
+     * On a smooth octahedron whose vertex normals point away from its centre, lights are looked at
+     * from the point lifted towards the sphere those normals describe: outward from the flat face,
+     * by at most the face's distance to that sphere, and not at all at a corner.
+     */
+    @Test
+    void smoothTrianglesAreLitFromTheLiftedPoint() {
+        double[] p = {1, 0, 0, -1, 0, 0, 0, 1, 0, 0, -1, 0, 0, 0, 1, 0, 0, -1};
+        int[] t = {0, 2, 4, 2, 1, 4, 1, 3, 4, 3, 0, 4, 2, 0, 5, 1, 2, 5, 3, 1, 5, 0, 3, 5};
+        MeshData octahedron = new MeshData("octahedron", p, t, p.clone(), null, true);
+        Shapes shapes = new Shapes();
+        int s = shapes.add(new Mesh(octahedron, true, M, Transform.IDENTITY, SourceSpan.NONE), Transform.IDENTITY, 0);
+        Ray ray = new Ray();
+        LineSpan span = new LineSpan();
+        SurfacePoint q = new SurfacePoint();
+        Vec3 centre = v(1, 1, 1).normalize();
+        ray.set(3, 3, 3, -centre.x(), -centre.y(), -centre.z());
+        assertThat(shapes.span(s, ray, span)).isTrue();
+        shapes.surface(s, span.faceIn[0], span.tIn[0], ray, q);
+        assertThat(q.shaded).isTrue();
+        Vec3 flat = v(q.px, q.py, q.pz), lifted = v(q.lx, q.ly, q.lz);
+        double rise = lifted.minus(flat).dot(centre);
+        // The face's centre is 1/√3 from the origin; the sphere of the normals is at 1.
+        assertThat(rise).isGreaterThan(0.05).isLessThanOrEqualTo(1 - 1 / Math.sqrt(3) + 1e-9);
+        ray.set(3, 1e-9, 2e-9, -1, 0, 0);
+        assertThat(shapes.span(s, ray, span)).isTrue();
+        shapes.surface(s, span.faceIn[0], span.tIn[0], ray, q);
+        assertThat(v(q.lx, q.ly, q.lz).minus(v(q.px, q.py, q.pz)).length()).isLessThan(1e-6);
+    }
 }
