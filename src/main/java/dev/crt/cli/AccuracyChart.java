@@ -7,6 +7,7 @@ import java.awt.Color;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.Comparator;
 import java.util.List;
 import java.util.function.Predicate;
@@ -39,9 +40,12 @@ final class AccuracyChart {
         XYStyler s = chart.getStyler();
         s.setXAxisLogarithmic(true);
         s.setYAxisLogarithmic(true);
-        // Error curves often span less than a decade: label more than the powers of ten.
-        s.setYAxisLogarithmicDecadeOnly(false);
-        s.setXAxisLogarithmicDecadeOnly(false);
+        // Whole decades on both axes, so each shows at least two labelled powers of ten.
+        double[] t = seconds(points), e = values(points, error);
+        s.setXAxisMin(decadeBelow(min(t)));
+        s.setXAxisMax(decadeAbove(max(t)));
+        s.setYAxisMin(decadeBelow(min(e)));
+        s.setYAxisMax(decadeAbove(max(e)));
         s.setLegendPosition(Styler.LegendPosition.InsideNE);
         s.setChartBackgroundColor(Color.WHITE);
         s.setXAxisDecimalPattern("0.###");
@@ -67,6 +71,18 @@ final class AccuracyChart {
         AtomicFile.write(dir.resolve(name + ".svg"),
                 out -> VectorGraphicsEncoder.saveVectorGraphic(chart, out, VectorGraphicsEncoder.VectorGraphicsFormat.SVG));
     }
+
+    private static double decadeBelow(double v) { return Math.pow(10, Math.floor(Math.log10(v))); }
+
+    /** The power of ten above v, and never the same as the one below (a decade at least). */
+    private static double decadeAbove(double v) {
+        double d = Math.pow(10, Math.ceil(Math.log10(v)));
+        return d == decadeBelow(v) ? d * 10 : d;
+    }
+
+    private static double min(double[] v) { return Arrays.stream(v).min().orElse(1); }
+
+    private static double max(double[] v) { return Arrays.stream(v).max().orElse(1); }
 
     private static double[] seconds(List<AccuracyStudy.Point> ps) {
         return ps.stream().mapToDouble(AccuracyStudy.Point::seconds).toArray();

@@ -82,6 +82,9 @@ final class AccuracyCommand implements Callable<Integer> {
     @Option(names = "--no-cache", description = "Render the reference again even when a cached one exists.")
     boolean noCache;
 
+    @Option(names = "--replot", description = "Render nothing: draw the charts again from the output folder's accuracy.csv.")
+    boolean replot;
+
     @Mixin
     ScriptOptions scriptOptions;
 
@@ -92,6 +95,7 @@ final class AccuracyCommand implements Callable<Integer> {
     public Integer call() throws CliFailure {
         PrintWriter out = spec.commandLine().getOut();
         PrintWriter err = spec.commandLine().getErr();
+        if (replot) return replot(err);
         List<Sampler> samplers = samplers();
         if (budgets.isEmpty()) throw new ParameterException(spec.commandLine(), "--budgets needs at least one budget");
         OptionChecks.requireAtLeast(spec, width, 1, "--width");
@@ -146,16 +150,45 @@ final class AccuracyCommand implements Callable<Integer> {
         }
         try {
             writeCsv(points, dir.resolve("accuracy.csv"));
-            String title = stem(sceneFile) + ", " + s.width() + "×" + s.height();
-            AccuracyChart.write(points, title + ": RMSE against time", "RMSE (8-bit levels)", AccuracyStudy.Point::rmse,
-                    AccuracyStudy.Point::paretoRmse, dir.resolve("rmse"));
-            AccuracyChart.write(points, title + ": 1 − SSIM against time", "1 − SSIM", p -> 1 - p.ssim(),
-                    AccuracyStudy.Point::paretoSsim, dir.resolve("ssim"));
+            charts(points, stem(sceneFile) + ", " + s.width() + "×" + s.height(), dir);
             ImageFiles.write(reference, dir.resolve("reference.png"), s.outputGamma(), Map.of("Software", "CRT accuracy reference"));
         } catch (IOException e) {
             throw new CliFailure(ExitCode.FILE_ERROR, "cannot write into " + dir + ": " + ScriptCompilation.plain(e));
         }
         err.println("crt: wrote " + dir.resolve("accuracy.csv") + ", rmse.png/.svg, ssim.png/.svg and reference.png");
+        err.flush();
+        return ExitCode.OK;
+    }
+
+    private static void charts(List<AccuracyStudy.Point> points, String title, Path dir) throws IOException {
+        AccuracyChart.write(points, title + ": RMSE against time", "RMSE (8-bit levels)", AccuracyStudy.Point::rmse,
+                AccuracyStudy.Point::paretoRmse, dir.resolve("rmse"));
+        AccuracyChart.write(points, title + ": 1 − SSIM against time", "1 − SSIM", p -> 1 - p.ssim(),
+                AccuracyStudy.Point::paretoSsim, dir.resolve("ssim"));
+    }
+
+    /** Draws the charts again from the CSV an earlier study wrote into the output folder. */
+    private int replot(PrintWriter err) throws CliFailure {
+        Path dir = output != null ? output : Path.of("accuracy-" + stem(sceneFile));
+        Path csv = dir.resolve("accuracy.csv");
+        List<AccuracyStudy.Point> points = new ArrayList<>();
+        try {
+            List<String> rows = Files.readAllLines(csv, StandardCharsets.UTF_8);
+            for (String row : rows.subList(1, rows.size())) {
+                String[] f = row.split(",");
+                Sampler m = Sampler.of(f[0]).orElseThrow(() -> new IllegalArgumentException("unknown method " + f[0]));
+                points.add(new AccuracyStudy.Point(m, Integer.parseInt(f[1]), Integer.parseInt(f[2]), Integer.parseInt(f[3]),
+                        Double.parseDouble(f[4]), Long.parseLong(f[5]), Long.parseLong(f[6]), Double.parseDouble(f[7]),
+                        Double.parseDouble(f[8]), false, false));
+            }
+            charts(AccuracyStudy.markPareto(points), stem(sceneFile), dir);
+        } catch (IOException e) {
+            throw new CliFailure(ExitCode.FILE_ERROR, "cannot replot from " + csv + ": " + ScriptCompilation.plain(e));
+        } catch (RuntimeException e) {
+            throw new CliFailure(ExitCode.FILE_ERROR, "cannot replot from " + csv + ": it is not a CSV crt accuracy wrote ("
+                    + e.getMessage() + ")");
+        }
+        err.println("crt: drew " + dir.resolve("rmse.png") + " and ssim.png again from " + csv);
         err.flush();
         return ExitCode.OK;
     }
@@ -194,7 +227,8 @@ final class AccuracyCommand implements Callable<Integer> {
         ReferenceCache cache = new ReferenceCache(ReferenceCache.defaultFolder());
         String version = Main.class.getPackage().getImplementationVersion();
         String key = ReferenceCache.key(source.text(), Double.toString(timeOption.time), s.width() + "×" + s.height(),
-                Integer.toString(referenceSpp), String.valueOf(scriptOptions.assetDirs), version == null ? "dev" : version);
+                Integer.toString(referenceSpp), String.valueOf(scriptOptions.assetDirs), version == null ? "dev" : version,
+                "reference seed " + AccuracyStudy.REFERENCE_SEED);
         if (!noCache) {
             FrameBuffer cached = cache.load(key);
             if (cached != null && cached.width() == s.width() && cached.height() == s.height()) {
@@ -203,7 +237,7 @@ final class AccuracyCommand implements Callable<Integer> {
                 return cached;
             }
         }
-        Scene ref = AccuracyStudy.withBudget(scene, Sampler.SOBOL, referenceSpp, noise);
+        Scene ref = AccuracyStudy.reference(scene, referenceSpp, noise);
         long total = (long) s.width() * s.height();
         FrameBuffer image;
         try (Progress progress = Progress.start("Reference (" + referenceSpp + " spp)", total, "px", false)) {

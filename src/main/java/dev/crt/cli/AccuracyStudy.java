@@ -32,7 +32,20 @@ final class AccuracyStudy {
         void measured(Point p);
     }
 
+    /**
+     * Mixed into the scene seed for the reference, so the reference's Sobol points are not the
+     * first points of the sequence the Sobol and adaptive samplers draw: a shared prefix would
+     * correlate their errors with the reference's and flatter them.
+     */
+    static final long REFERENCE_SEED = 0x5EED_0F_2EFL;
+
     private AccuracyStudy() {}
+
+    /** The scene as the converged reference renders it: Sobol, {@code spp} samples, its own seed. */
+    static Scene reference(Scene scene, int spp, double noise) {
+        Scene s = withBudget(scene, Sampler.SOBOL, spp, noise);
+        return s.withSettings(s.settings().withSeed(s.settings().seed() ^ REFERENCE_SEED));
+    }
 
     /** Whether the scene's camera has a lens (its pixels then take dofsamples as well). */
     static boolean hasLens(Scene scene) {

@@ -29,17 +29,16 @@ import picocli.CommandLine.Spec;
                 "  crt animate orbit.crt --frames 0..47 -o frames/orbit_%%04d.png --gif orbit.gif",
                 "  crt animate orbit.crt --frames 0..999 -o /farm/%%04d.png --shard 3/10 --resume",
                 "",
-                "Exit codes: 0 every frame rendered, 1 the script has errors at some frame, 2 bad usage, 3 a file "
-                        + "could not be read or written (or frame files exist already without --resume or --force), "
-                        + "130 cancelled with Ctrl-C."})
+                "Frame files that exist already are a file error (3) without --resume or --force.",
+                ExitCode.HELP_LINE})
 final class AnimateCommand implements Callable<Integer> {
     /** The exit code of a run stopped by Ctrl-C, as shells report a SIGINT. */
-    static final int CANCELLED = 130;
+    static final int CANCELLED = ExitCode.CANCELLED;
 
     @Spec
     CommandSpec spec;
 
-    @Parameters(index = "0", paramLabel = "SCENE", description = "The scene script (.crt); t is the frame number.")
+    @Parameters(index = "0", paramLabel = "SCENE", description = "The scene script (.crt), or - for the standard input; t is the frame number.")
     Path sceneFile;
 
     @Option(names = "--frames", required = true, paramLabel = "A..B[:STEP]",
@@ -171,7 +170,7 @@ final class AnimateCommand implements Callable<Integer> {
         if (time != null) {
             throw usage("--time does not apply to crt animate: t is the frame number (use crt render --time T for one frame)");
         }
-        OptionChecks.requireAtLeast(spec, jobs, 1, "--jobs");
+        OptionChecks.requireBetween(spec, jobs, 1, RenderOptions.MAX_THREADS, "--jobs");
         FrameRange range;
         Shard share;
         FramePattern pattern;
@@ -219,7 +218,8 @@ final class AnimateCommand implements Callable<Integer> {
     private int report(Plan plan, AnimationRun.Outcome outcome, int skipped, PrintWriter err) {
         long rendered = outcome.totals().frames();
         List<AnimationRun.Failure> failures = outcome.failures();
-        if (!renderOptions.quiet || !failures.isEmpty() || outcome.cancelled()) {
+        // -q: no summary, even on a cancel; the one line below still says what was left.
+        if (!renderOptions.quiet || !failures.isEmpty()) {
             err.printf(Locale.ROOT, "crt: frames %s%s: %d rendered, %d skipped, %d failed in %s (%.2f frames/s)%n",
                     plan.range(), plan.shard().count() > 1 ? " shard " + plan.shard() : "", rendered, skipped,
                     failures.size(), RenderCommand.seconds(outcome.wallNanos()),

@@ -17,12 +17,12 @@ import picocli.CommandLine.Model.CommandSpec;
 @Command(name = "check", mixinStandardHelpOptions = true, versionProvider = Main.Version.class,
         description = {"Compile scene scripts and report errors and warnings without rendering.",
                 "Diagnostics go to stderr, one summary line per file to stdout."},
-        footer = {"", "Exit codes: 0 all compile, 1 a script has errors, 2 bad usage, 3 a file could not be read."})
+        footer = {"", ExitCode.HELP_LINE})
 final class CheckCommand implements Callable<Integer> {
     @Spec
     CommandSpec spec;
 
-    @Parameters(arity = "1..*", paramLabel = "SCENE", description = "Scene scripts (.crt) to check.")
+    @Parameters(arity = "1..*", paramLabel = "SCENE", description = "Scene scripts (.crt) to check; - reads the standard input.")
     List<Path> scenes;
 
     @Mixin

@@ -26,6 +26,8 @@ final class FrameJob {
             throw new CliFailure(ExitCode.USAGE, String.format(Locale.ROOT,
                     "an image of %d×%d pixels is too large to render (at most %,d pixels)", w, h, FrameBuffer.MAX_PIXELS));
         }
+        Sampling.check(scene.settings());
+        MemoryCheck.check(w, h, Runtime.getRuntime());
         Renderer renderer = Renderer.prepare(scene);
         FrameBuffer image = renderer.render(threads, monitor);
         long start = System.nanoTime();

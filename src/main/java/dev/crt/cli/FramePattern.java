@@ -56,9 +56,10 @@ record FramePattern(String text, String before, String conversion, String after)
         return pattern;
     }
 
-    /** The file of frame {@code frame}. */
+    /** The file of frame {@code frame}; a width pads with zeros ({@code %5d} as {@code %05d}), never with spaces. */
     Path path(int frame) {
-        return Path.of(before + String.format(Locale.ROOT, conversion, frame) + after);
+        String padded = conversion.length() > 2 && conversion.charAt(1) != '0' ? "%0" + conversion.substring(1) : conversion;
+        return Path.of(before + String.format(Locale.ROOT, padded, frame) + after);
     }
 
     /** The image type, from the pattern's extension ("png", "ppm", "pfm", or anything the user typed). */

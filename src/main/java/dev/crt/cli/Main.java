@@ -13,18 +13,20 @@ import picocli.CommandLine.Command;
         versionProvider = Main.Version.class,
         description = "CRT, the Cathode Ray Tracer: compile and render .crt scene scripts.",
         subcommands = {CheckCommand.class, RenderCommand.class, AnimateCommand.class, AccuracyCommand.class,
+                PreviewCommand.class,
                 CommandLine.HelpCommand.class},
-        footer = {"", "Exit codes: 0 success, 1 the script has errors, 2 bad usage, 3 a file could not be read or written."})
+        footer = {"", ExitCode.HELP_LINE})
 public final class Main implements Runnable {
     /** A bug in CRT rather than a problem with the user's input (EX_SOFTWARE). */
-    static final int INTERNAL_ERROR = 70;
+    static final int INTERNAL_ERROR = ExitCode.INTERNAL_ERROR;
 
     @CommandLine.Spec
     CommandLine.Model.CommandSpec spec;
 
     @Override
     public void run() {
-        throw new CommandLine.ParameterException(spec.commandLine(), "a command is needed: check, render, animate or accuracy");
+        throw new CommandLine.ParameterException(spec.commandLine(),
+                "a command is needed: check, render, animate, accuracy or preview");
     }
 
     public static void main(String[] args) {
@@ -59,8 +61,11 @@ public final class Main implements Runnable {
         CommandLine cl = new CommandLine(new Main());
         cl.setOut(out);
         cl.setErr(err);
+        // As git and cargo do: the error, then where help is, not 40 lines of help burying the error.
+        cl.setParameterExceptionHandler((ex, params) -> usageError(ex.getCommandLine(), describe(ex)));
         cl.setExecutionExceptionHandler((ex, line, parsed) -> {
             if (ex instanceof CliFailure f) {
+                if (f.exitCode() == ExitCode.USAGE) return usageError(line, f.getMessage());
                 line.getErr().println("crt: " + f.getMessage());
                 return f.exitCode();
             }
@@ -68,7 +73,44 @@ public final class Main implements Runnable {
             ex.printStackTrace(line.getErr());
             return INTERNAL_ERROR;
         });
-        return cl.execute(args);
+        try {
+            return cl.execute(args);
+        } catch (OutOfMemoryError e) {
+            return outOfMemory(err);
+        }
+    }
+
+    /** picocli's message, except for a mistyped command, which is named as one. */
+    private static String describe(CommandLine.ParameterException ex) {
+        if (ex instanceof CommandLine.UnmatchedArgumentException unmatched && ex.getCommandLine().getParent() == null
+                && !unmatched.getUnmatched().isEmpty() && !unmatched.getUnmatched().get(0).startsWith("-")) {
+            return "unknown command '" + unmatched.getUnmatched().get(0) + "' (the commands are check, render, animate and help)";
+        }
+        // Some of picocli's messages start with their own "Error: ", which would follow ours.
+        String message = ex.getMessage();
+        return message.startsWith("Error: ") ? message.substring("Error: ".length()) : message;
+    }
+
+    /** Prints "crt: error: …" and a pointer to the command's --help; the exit code of bad usage. */
+    static int usageError(CommandLine line, String message) {
+        PrintWriter err = line.getErr();
+        err.println("crt: error: " + message);
+        err.println("Try '" + line.getCommandSpec().qualifiedName() + " --help' for more information.");
+        err.flush();
+        return ExitCode.USAGE;
+    }
+
+    /**
+     * The heap ran out although the render was estimated to fit (the estimate cannot see
+     * everything): one sentence and the internal-error code, never a trace, never 1.
+     */
+    static int outOfMemory(PrintWriter err) {
+        long max = Runtime.getRuntime().maxMemory();
+        long suggest = Math.max(1, (2 * max + (1L << 30) - 1) >> 30);
+        err.println("crt: error: out of memory: the Java heap of " + MemoryCheck.gib(max) + " is too small for this"
+                + " scene; give Java more (CRT_JAVA_OPTS=-Xmx" + suggest + "g ./crt …) or render a smaller image or scene");
+        err.flush();
+        return INTERNAL_ERROR;
     }
 
     /** The version from the jar's manifest, or "development" when run from classes. */

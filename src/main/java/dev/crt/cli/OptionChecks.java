@@ -21,4 +21,11 @@ final class OptionChecks {
             throw new ParameterException(spec.commandLine(), option + " must be at least " + min + ", got " + value);
         }
     }
+
+    static void requireBetween(CommandSpec spec, Integer value, int min, int max, String option) {
+        if (value != null && (value < min || value > max)) {
+            throw new ParameterException(spec.commandLine(),
+                    option + " must be from " + min + " to " + max + ", got " + value);
+        }
+    }
 }

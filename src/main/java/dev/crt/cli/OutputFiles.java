@@ -2,6 +2,7 @@ package dev.crt.cli;
 
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.List;
 import java.util.Locale;
 import java.util.Set;
 
@@ -17,22 +18,20 @@ final class OutputFiles {
         return dot < 0 ? "" : name.substring(dot + 1).toLowerCase(Locale.ROOT);
     }
 
-    /** Fails with a usage error for an unknown image type, or a file error when the folder cannot take it. */
+    /**
+     * Fails with a file error when {@code out} is a folder or its folder cannot take files, or a
+     * usage error for an unknown image type. Missing folders are created, as crt animate does.
+     */
     static void checkWritableImage(Path out) throws CliFailure {
+        if (Files.isDirectory(out)) {
+            throw new CliFailure(ExitCode.FILE_ERROR, "cannot write " + out + ": it is a folder (give a file name, such as "
+                    + out.resolve("scene.png") + ")");
+        }
         String ext = extension(out);
         if (!IMAGE_TYPES.contains(ext)) {
             throw new CliFailure(ExitCode.USAGE, "cannot write " + out + ": unsupported image type '"
                     + (ext.isEmpty() ? "(none)" : "." + ext) + "' (use .png, .ppm or .pfm)");
         }
-        if (Files.isDirectory(out)) {
-            throw new CliFailure(ExitCode.FILE_ERROR, "cannot write " + out + ": it is a folder");
-        }
-        Path dir = out.toAbsolutePath().getParent();
-        if (dir != null && !Files.isDirectory(dir)) {
-            throw new CliFailure(ExitCode.FILE_ERROR, "cannot write " + out + ": folder " + dir + " does not exist");
-        }
-        if (dir != null && !Files.isWritable(dir)) {
-            throw new CliFailure(ExitCode.FILE_ERROR, "cannot write " + out + ": folder " + dir + " is not writable");
-        }
+        FrameFiles.prepareFolders(List.of(out));
     }
 }

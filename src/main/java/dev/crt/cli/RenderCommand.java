@@ -20,16 +20,16 @@ import picocli.CommandLine.Model.CommandSpec;
 @Command(name = "render", mixinStandardHelpOptions = true, versionProvider = Main.Version.class,
         description = {"Render a scene script to an image (.png, .ppm or .pfm by extension).",
                 "Command-line values override the script's Settings. Ctrl-C cancels and writes nothing."},
-        footer = {"", "Exit codes: 0 rendered, 1 the script has errors, 2 bad usage, 3 a file could not be read or written."})
+        footer = {"", ExitCode.HELP_LINE})
 final class RenderCommand implements Callable<Integer> {
     @Spec
     CommandSpec spec;
 
-    @Parameters(index = "0", paramLabel = "SCENE", description = "The scene script (.crt).")
+    @Parameters(index = "0", paramLabel = "SCENE", description = "The scene script (.crt), or - for the standard input.")
     Path sceneFile;
 
     @Option(names = {"-o", "--output"}, paramLabel = "OUT",
-            description = "The image to write (default: the script's name with .png, in the current folder).")
+            description = "The image to write (default: the script's name with .png, in the current folder); missing folders are created.")
     Path output;
 
     @Mixin
@@ -41,13 +41,20 @@ final class RenderCommand implements Callable<Integer> {
     @Mixin
     RenderOptions renderOptions;
 
+    @Mixin
+    PassOption passOption;
+
     @Override
     public Integer call() throws CliFailure {
         PrintWriter out = spec.commandLine().getOut();
         PrintWriter err = spec.commandLine().getErr();
         renderOptions.validate(spec);
         CompileOptions options = OptionChecks.compileOptions(spec, scriptOptions, timeOption.time);
-        Path target = output != null ? output : defaultOutput(sceneFile);
+        if (output == null && ScriptCompilation.isStandardInput(sceneFile)) {
+            throw new CliFailure(ExitCode.USAGE, "a script read from the standard input (-) needs -o OUT for the image");
+        }
+        Path target = output != null ? output : passOption.defaultOutput(sceneFile);
+        PassOption.Pass pass = passOption.pass(spec, target);
         OutputFiles.checkWritableImage(target);
 
         long compileStart = System.nanoTime();
@@ -56,6 +63,7 @@ final class RenderCommand implements Callable<Integer> {
         long compileNanos = System.nanoTime() - compileStart;
         if (result.hasErrors()) return ExitCode.SCRIPT_ERROR;
         Scene scene = renderOptions.applyTo(result.scene());
+        if (pass != PassOption.Pass.COLOR) return PassFiles.renderPass(scene, pass, target, renderOptions.quiet, err);
 
         long total = (long) scene.settings().width() * scene.settings().height();
         FrameJob.Outcome outcome;
@@ -66,7 +74,7 @@ final class RenderCommand implements Callable<Integer> {
         } catch (RenderCancelledException e) {
             err.println("crt: render cancelled; nothing was written");
             err.flush();
-            return 130;
+            return ExitCode.CANCELLED;
         }
         if (!renderOptions.quiet) {
             err.printf(Locale.ROOT, "crt: wrote %s (%d×%d) in %s%n", target, scene.settings().width(),

@@ -10,6 +10,9 @@ import picocli.CommandLine.ParameterException;
 
 /** Options shared by commands that render: image size, sampling, threads and reporting. */
 final class RenderOptions {
+    /** More threads than this only cost memory: each reserves a deep stack. */
+    static final int MAX_THREADS = 256;
+
     @Option(names = "--width", paramLabel = "W", description = "Image width in pixels (overrides Settings).")
     Integer width;
 
@@ -47,9 +50,9 @@ final class RenderOptions {
     void validate(CommandSpec spec) {
         OptionChecks.requireAtLeast(spec, width, 1, "--width");
         OptionChecks.requireAtLeast(spec, height, 1, "--height");
-        OptionChecks.requireAtLeast(spec, supersampling, 1, "--supersampling");
-        OptionChecks.requireAtLeast(spec, dofSamples, 1, "--dof-samples");
-        OptionChecks.requireAtLeast(spec, threads, 0, "--threads");
+        OptionChecks.requireBetween(spec, supersampling, 1, Settings.MAX_SUPERSAMPLING, "--supersampling");
+        OptionChecks.requireBetween(spec, dofSamples, 1, Settings.MAX_DOF_SAMPLES, "--dof-samples");
+        OptionChecks.requireBetween(spec, threads, 0, MAX_THREADS, "--threads");
         if (sampler != null && Sampler.of(sampler).isEmpty()) {
             throw new ParameterException(spec.commandLine(),
                     "--sampler must be grid, jittered, sobol or adaptive, not '" + sampler + "'");

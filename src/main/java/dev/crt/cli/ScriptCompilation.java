@@ -19,6 +19,13 @@ final class ScriptCompilation {
 
     /** Reads {@code file}; a missing or unreadable file is a CliFailure with exit code 3. */
     static Source read(Path file) throws CliFailure {
+        if (isStandardInput(file)) {
+            try {
+                return ScriptFiles.read("<stdin>", System.in.readAllBytes());
+            } catch (IOException e) {
+                throw new CliFailure(ExitCode.FILE_ERROR, "cannot read the standard input: " + plain(e));
+            }
+        }
         if (Files.isDirectory(file)) {
             throw new CliFailure(ExitCode.FILE_ERROR, "cannot read " + file + ": it is a folder, not a script");
         }
@@ -30,6 +37,9 @@ final class ScriptCompilation {
             throw new CliFailure(ExitCode.FILE_ERROR, "cannot read " + file + ": " + plain(e));
         }
     }
+
+    /** '-' names the standard input, as it does for most Unix commands. */
+    static boolean isStandardInput(Path file) { return file.toString().equals("-"); }
 
     /** Compiles {@code source}, printing every diagnostic to {@code err}. */
     static CompileResult compile(Source source, CompileOptions options, PrintWriter err) {

@@ -1,6 +1,7 @@
 package dev.crt.cli;
 
 import dev.crt.lang.CompileOptions;
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
 import java.util.ArrayList;
@@ -21,6 +22,11 @@ final class ScriptOptions {
     CompileOptions toCompileOptions(double time) {
         if (!Double.isFinite(time)) {
             throw new IllegalArgumentException("--time must be a finite number, got " + time);
+        }
+        for (Path dir : assetDirs) {
+            if (!Files.isDirectory(dir)) {
+                throw new IllegalArgumentException("--assets " + dir + ": " + (Files.exists(dir) ? "not a folder" : "no such folder"));
+            }
         }
         if (!(timeBudget > 0)) {
             throw new IllegalArgumentException("--time-budget must be a positive number of seconds");

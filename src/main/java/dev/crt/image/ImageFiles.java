@@ -26,6 +26,25 @@ public final class ImageFiles {
      */
     public static void write(FrameBuffer image, Path out, double gamma, Map<String, String> text) throws IOException {
         ImageWriter writer = writerFor(out);
+        writeAtomically(out, stream -> writer.write(image, gamma, text, stream));
+    }
+
+    /**
+     * Writes a one-channel map (a depth pass: distances, +∞ where nothing was hit) as a greyscale
+     * PFM ("Pf", little-endian floats, rows bottom to top), atomically like {@link #write}.
+     * {@code values} holds {@code width × height} values, rows top to bottom.
+     */
+    public static void writeGreyPfm(float[] values, int width, int height, Path out) throws IOException {
+        if (values.length != width * height) throw new IllegalArgumentException("expected " + width * height + " values");
+        writeAtomically(out, stream -> PfmWriter.writeGrey(values, width, height, stream));
+    }
+
+    /** Writes the bytes a body produces into a temporary file beside {@code out}, then renames it into place. */
+    private interface Body {
+        void write(OutputStream stream) throws IOException;
+    }
+
+    private static void writeAtomically(Path out, Body body) throws IOException {
         Path target = out.toAbsolutePath();
         Path folder = target.getParent();
         if (folder == null || !Files.exists(folder)) {
@@ -39,7 +58,7 @@ public final class ImageFiles {
         try {
             try (FileChannel channel = FileChannel.open(temp, StandardOpenOption.CREATE_NEW, StandardOpenOption.WRITE);
                     OutputStream stream = new BufferedOutputStream(Channels.newOutputStream(channel), 1 << 16)) {
-                writer.write(image, gamma, text, stream);
+                body.write(stream);
                 stream.flush();
                 channel.force(true);
             }
@@ -86,16 +105,13 @@ public final class ImageFiles {
         return (int) Math.round(v * 255);
     }
 
-    /** The whole image as gamma-encoded bytes, r, g, b per pixel, rows top to bottom. */
-    static byte[] encode8(FrameBuffer image, double gamma) {
+    /**
+     * Row {@code y} of the image as gamma-encoded bytes, r, g, b per pixel, into {@code row}: the
+     * writers encode row by row, so writing needs no second full-size copy of the image.
+     */
+    static void encodeRow(FrameBuffer image, int y, GammaEncoder encoder, byte[] row) {
         float[] data = image.data();
-        byte[] bytes = new byte[data.length];
-        if (gamma == 1) {
-            for (int i = 0; i < data.length; i++) bytes[i] = (byte) toByte(data[i], 1);
-        } else {
-            GammaEncoder encoder = new GammaEncoder(gamma);
-            for (int i = 0; i < data.length; i++) bytes[i] = (byte) encoder.encode(data[i]);
-        }
-        return bytes;
+        int start = y * image.width() * 3;
+        for (int i = 0; i < row.length; i++) row[i] = (byte) encoder.encode(data[start + i]);
     }
 }

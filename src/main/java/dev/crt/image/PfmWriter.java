@@ -28,4 +28,15 @@ final class PfmWriter implements ImageWriter {
             }
         }
     }
+
+    /** A one-channel map as "Pf": little-endian floats, rows bottom to top; {@code values} rows top to bottom. */
+    static void writeGrey(float[] values, int w, int h, OutputStream out) throws IOException {
+        out.write(("Pf\n" + w + " " + h + "\n-1.0\n").getBytes(StandardCharsets.US_ASCII));
+        ByteBuffer row = ByteBuffer.allocate(4 * w).order(ByteOrder.LITTLE_ENDIAN);
+        for (int y = h - 1; y >= 0; y--) {
+            row.clear();
+            for (int x = 0; x < w; x++) row.putFloat(values[y * w + x]);
+            out.write(row.array(), 0, row.position());
+        }
+    }
 }

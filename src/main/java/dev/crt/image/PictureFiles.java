@@ -32,7 +32,13 @@ public final class PictureFiles {
         }
         try {
             if (bytes.length >= 2 && bytes[0] == 'P' && bytes[1] == '6') return readPpm(bytes, file);
-            BufferedImage image = ImageIO.read(new ByteArrayInputStream(bytes));
+            BufferedImage image;
+            try {
+                image = ImageIO.read(new ByteArrayInputStream(bytes));
+            } catch (IOException damaged) {
+                // ImageIO's own words ("Error reading PNG image data") say nothing to a user.
+                throw new IOException(file + " is damaged or truncated: it cannot be decoded as an image");
+            }
             if (image == null) throw new IOException(file + " is not an image CRT can decode (PNG, JPEG, GIF, BMP or PPM)");
             return fromImage(image, file);
         } catch (IOException e) {

@@ -47,29 +47,74 @@ final class PngWriter implements ImageWriter {
                 chunk(out, "tEXt", data);
             }
         }
-        chunk(out, "IDAT", compress(ImageFiles.encode8(image, gamma), w, h));
+        compress(image, gamma, out);
         chunk(out, "IEND", new byte[0]);
     }
 
-    /** Scanlines filtered with Up (each byte minus the one above), deflated fast. */
-    private static byte[] compress(byte[] rgb, int w, int h) throws IOException {
-        int stride = w * 3;
-        ByteArrayOutputStream buffer = new ByteArrayOutputStream(rgb.length / 3);
+    /**
+     * Scanlines filtered with Up (each byte minus the one above), deflated fast and written as
+     * IDAT chunks of at most 64 KiB as they fill: two rows and one chunk are all the memory it
+     * needs, whatever the size of the image.
+     */
+    private static void compress(FrameBuffer image, double gamma, OutputStream out) throws IOException {
+        int stride = image.width() * 3;
+        GammaEncoder encoder = new GammaEncoder(gamma);
         Deflater deflater = new Deflater(Deflater.BEST_SPEED);
-        try (DeflaterOutputStream z = new DeflaterOutputStream(buffer, deflater, 1 << 16)) {
+        try (DeflaterOutputStream z = new DeflaterOutputStream(new IdatChunks(out), deflater, 1 << 16)) {
+            byte[] above = new byte[stride];
+            byte[] row = new byte[stride];
             byte[] line = new byte[stride + 1];
             line[0] = FILTER_UP;
-            for (int y = 0; y < h; y++) {
-                int row = y * stride;
-                for (int i = 0; i < stride; i++) {
-                    line[i + 1] = (byte) (rgb[row + i] - (y == 0 ? 0 : rgb[row - stride + i]));
-                }
+            for (int y = 0; y < image.height(); y++) {
+                ImageFiles.encodeRow(image, y, encoder, row);
+                for (int i = 0; i < stride; i++) line[i + 1] = (byte) (row[i] - above[i]);
                 z.write(line);
+                byte[] swap = above;
+                above = row;
+                row = swap;
             }
         } finally {
             deflater.end();
         }
-        return buffer.toByteArray();
+    }
+
+    /** Collects the compressed stream into IDAT chunks of up to 64 KiB. */
+    private static final class IdatChunks extends OutputStream {
+        private final OutputStream out;
+        private final byte[] buffer = new byte[1 << 16];
+        private int used;
+
+        IdatChunks(OutputStream out) { this.out = out; }
+
+        @Override
+        public void write(int b) throws IOException {
+            if (used == buffer.length) emit();
+            buffer[used++] = (byte) b;
+        }
+
+        @Override
+        public void write(byte[] b, int off, int len) throws IOException {
+            while (len > 0) {
+                if (used == buffer.length) emit();
+                int n = Math.min(len, buffer.length - used);
+                System.arraycopy(b, off, buffer, used, n);
+                used += n;
+                off += n;
+                len -= n;
+            }
+        }
+
+        private void emit() throws IOException {
+            byte[] data = java.util.Arrays.copyOf(buffer, used);
+            chunk(out, "IDAT", data);
+            used = 0;
+        }
+
+        /** Writes the last chunk but leaves {@code out} open for IEND. */
+        @Override
+        public void close() throws IOException {
+            if (used > 0) emit();
+        }
     }
 
     private static void chunk(OutputStream out, String type, byte[] data) throws IOException {

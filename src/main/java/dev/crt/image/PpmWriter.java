@@ -12,6 +12,11 @@ final class PpmWriter implements ImageWriter {
     @Override
     public void write(FrameBuffer image, double gamma, Map<String, String> text, OutputStream out) throws IOException {
         out.write(("P6\n" + image.width() + " " + image.height() + "\n255\n").getBytes(StandardCharsets.US_ASCII));
-        out.write(ImageFiles.encode8(image, gamma));
+        GammaEncoder encoder = new GammaEncoder(gamma);
+        byte[] row = new byte[image.width() * 3];
+        for (int y = 0; y < image.height(); y++) {
+            ImageFiles.encodeRow(image, y, encoder, row);
+            out.write(row);
+        }
     }
 }

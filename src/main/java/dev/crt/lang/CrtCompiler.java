@@ -1,6 +1,7 @@
 package dev.crt.lang;
 
 import dev.crt.lang.eval.Evaluator;
+import dev.crt.lang.syntax.ParseClock;
 import dev.crt.lang.syntax.ScriptParser;
 import dev.crt.scene.Scene;
 import dev.crt.scene.SourceSpan;
@@ -46,17 +47,25 @@ public final class CrtCompiler {
         String text = source.text() == null ? "" : source.text();
         TextPositions positions = new TextPositions(name, text);
         if (!source.isText()) {
-            return new CompileResult(null, List.of(error(source.decodingProblem(), positions.span(0, 0))));
+            int at = Math.min(Math.max(source.problemOffset(), 0), text.length());
+            return new CompileResult(null, List.of(error(source.decodingProblem(), positions.span(at, at + 1))));
         }
         try {
-            ScriptParser.Parsed parsed = ScriptParser.parse(positions);
+            long started = System.nanoTime();
+            ScriptParser.Parsed parsed = ScriptParser.parse(positions, new ParseClock(started, options.timeBudget()));
             if (parsed.statements() == null) return new CompileResult(null, parsed.errors());
             Path folder = source.file() == null ? null : source.file().toAbsolutePath().getParent();
-            Evaluator evaluator = new Evaluator(positions, options, folder);
+            Evaluator evaluator = new Evaluator(positions, options, folder, started);
             running.set(evaluator);
             try {
                 Scene scene = evaluator.run(parsed.statements(), parsed.assignedNames(), name);
                 return new CompileResult(scene, evaluator.diagnostics());
+            } catch (ParseClock.OutOfTime out) {
+                // The statements are parsed again as they run; the budget covers that parse too.
+                List<Diagnostic> all = new ArrayList<>(evaluator.diagnostics());
+                int at = positions.charOffset(out.at().getStartIndex());
+                all.add(error(out.getMessage(), positions.span(at, at)));
+                return new CompileResult(null, all);
             } catch (StackOverflowError e) {
                 List<Diagnostic> all = new ArrayList<>(evaluator.diagnostics());
                 all.add(error("evaluation nested too deeply (an expression or list nested thousands of levels deep?)",

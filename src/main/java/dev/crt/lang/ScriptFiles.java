@@ -19,13 +19,20 @@ public final class ScriptFiles {
     /**
      * Reads {@code file} as UTF-8 without a leading byte-order mark. Bytes that are not UTF-8 text
      * (malformed sequences, NUL bytes of a binary file) do not throw: the Source then carries the
-     * decoding problem, which compiling reports as a diagnostic at 1:1.
+     * decoding problem, which compiling reports as a diagnostic at the line and column of the bad byte.
      * @throws IOException only when the file cannot be read at all
      */
     public static Source read(Path file) throws IOException {
-        byte[] bytes = Files.readAllBytes(file);
+        return decode(file.toString(), Files.readAllBytes(file), file);
+    }
+
+    /** A script that is not a file (the standard input) named {@code name}, decoded as {@link #read} does. */
+    public static Source read(String name, byte[] bytes) {
+        return decode(name, bytes, null);
+    }
+
+    private static Source decode(String name, byte[] bytes, Path file) {
         int skip = startsWithBom(bytes) ? BOM.length : 0;
-        String name = file.toString();
         ByteBuffer in = ByteBuffer.wrap(bytes, skip, bytes.length - skip);
         CharsetDecoder decoder = StandardCharsets.UTF_8.newDecoder()
                 .onMalformedInput(CodingErrorAction.REPORT)
@@ -33,15 +40,18 @@ public final class ScriptFiles {
         CharBuffer out = CharBuffer.allocate(bytes.length);
         CoderResult result = decoder.decode(in, out, true);
         if (result.isError()) {
+            // The bytes before the bad one decode alike either way: its character offset in the
+            // lossy text is how many characters were decoded before it.
             String lossy = new String(bytes, skip, bytes.length - skip, StandardCharsets.UTF_8);
-            return new Source(name, lossy, file, "not a text file (invalid UTF-8 at byte " + in.position() + ")");
+            return new Source(name, lossy, file, "not a text file (invalid UTF-8 at byte " + in.position() + ")",
+                    out.position());
         }
         decoder.flush(out);
         String text = out.flip().toString();
         int nul = text.indexOf('\0');
         if (nul >= 0) {
             int byteOffset = skip + text.substring(0, nul).getBytes(StandardCharsets.UTF_8).length;
-            return new Source(name, text, file, "not a text file (NUL byte at byte " + byteOffset + ")");
+            return new Source(name, text, file, "not a text file (NUL byte at byte " + byteOffset + ")", nul);
         }
         return new Source(name, text, file);
     }

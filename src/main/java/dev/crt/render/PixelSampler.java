@@ -3,6 +3,7 @@ package dev.crt.render;
 import dev.crt.geom.Sobol;
 import dev.crt.scene.Sampler;
 import dev.crt.scene.Settings;
+import java.util.function.BooleanSupplier;
 
 /**
  * The colour of one pixel: the mean of its samples, each a sub-pixel position and, with a lens,
@@ -13,6 +14,8 @@ import dev.crt.scene.Settings;
 final class PixelSampler {
     /** The adaptive sampler's first pass takes this many samples per pixel (or its whole budget, if smaller). */
     static final int PILOT = 4;
+    /** The Sobol samplers ask whether to stop once every this many + 1 samples. */
+    private static final int STOP_RUN = 63;
 
     private final Tracer tracer;
     /** The 2015 model, or null for CRT's own. */
@@ -40,12 +43,17 @@ final class PixelSampler {
     /** Per pixel, the adaptive pilot's largest channel variance; shared by the render's samplers. */
     private final float[] pilotVariance;
 
+    /** Asked between rows of sub-pixels (and runs of samples), so that a cancel is prompt however many samples a pixel takes. */
+    private final BooleanSupplier stop;
+
     /**
      * A sampler for one render thread; {@code pilotVariance} (one value per pixel, shared by all the
      * render's samplers) is needed by the adaptive sampler only.
      */
-    PixelSampler(Tracer tracer, OriginalShading original, CameraRays camera, Settings settings, float[] pilotVariance) {
+    PixelSampler(Tracer tracer, OriginalShading original, CameraRays camera, Settings settings, float[] pilotVariance,
+            BooleanSupplier stop) {
         this.tracer = tracer;
+        this.stop = stop;
         this.original = original;
         gridOffset = original != null && settings.supersampling() > 1 ? 0 : 0.5;
         this.camera = camera;
@@ -67,7 +75,7 @@ final class PixelSampler {
         this.pilotVariance = pilotVariance;
     }
 
-    /** Writes the linear colour of pixel (i, j) into {@code out[0..2]}. */
+    /** Writes the linear colour of pixel (i, j) into {@code out[0..2]}; a stopped pixel's colour is partial and unused. */
     void pixel(int i, int j, double[] out) {
         Tracer t = tracer;
         t.accR = 0;
@@ -100,6 +108,7 @@ final class PixelSampler {
     private void grid(int i, int j) {
         if (camera.hasLens()) random.seed(i, j, seed);
         for (int b = 0; b < grid; b++) {
+            if (b > 0 && stop.getAsBoolean()) return;
             double sy = (b + gridOffset) / grid;
             for (int a = 0; a < grid; a++) {
                 double sx = (a + gridOffset) / grid;
@@ -115,10 +124,10 @@ final class PixelSampler {
     }
 
     /**
-     * One uniform point in each cell of the n×n grid, each cell's m lens samples after the other;
-     * the lens's first two coordinates each take one of the pixel's n²·m strata, in two random
-     * orders (a Latin hypercube over the whole budget, so the lens is as finely stratified as the
-     * pixel has samples).
+     * The n×n cells of the pixel each take m samples, every one at its own uniform point in its
+     * cell (so the pixel's area is sampled n²·m times, not only n² with a lens); the lens's first
+     * two coordinates each take one of the pixel's n²·m strata, in two random orders (a Latin
+     * hypercube over the whole budget).
      */
     private void jittered(int i, int j) {
         random.seed(i, j, seed);
@@ -128,13 +137,14 @@ final class PixelSampler {
         }
         int k = 0;
         for (int b = 0; b < grid; b++) {
+            if (b > 0 && stop.getAsBoolean()) return;
             for (int a = 0; a < grid; a++) {
-                double sx = (a + random.next()) / grid, sy = (b + random.next()) / grid;
                 if (!camera.hasLens()) {
-                    trace(i, j, sx, sy, weight);
+                    trace(i, j, (a + random.next()) / grid, (b + random.next()) / grid, weight);
                     continue;
                 }
                 for (int l = 0; l < lensSamples; l++, k++) {
+                    double sx = (a + random.next()) / grid, sy = (b + random.next()) / grid;
                     double u1 = (lensStrataU[k] + random.next()) / budget, u2 = (lensStrataV[k] + random.next()) / budget;
                     traceThroughLens(i, j, sx, sy, u1, u2, random.next(), weight);
                 }
@@ -156,7 +166,10 @@ final class PixelSampler {
     /** The budget's points of the scrambled Sobol sequence: dimensions 0–1 in the pixel, 2–4 on the lens. */
     private void sobol(int i, int j) {
         long h = PixelRandom.pixelHash(i, j, seed);
-        for (int k = 0; k < budget; k++) sobolSample(i, j, k, h, weight);
+        for (int k = 0; k < budget; k++) {
+            if ((k & STOP_RUN) == STOP_RUN && stop.getAsBoolean()) return;
+            sobolSample(i, j, k, h, weight);
+        }
     }
 
     private void sobolSample(int i, int j, int k, long h, double w) {
@@ -233,7 +246,10 @@ final class PixelSampler {
         t.accG = 0;
         t.accB = 0;
         long h = PixelRandom.pixelHash(i, j, seed);
-        for (int k = pilotCount; k < n; k++) sobolSample(i, j, k, h, 1);
+        for (int k = pilotCount; k < n; k++) {
+            if ((k & STOP_RUN) == STOP_RUN && stop.getAsBoolean()) break;
+            sobolSample(i, j, k, h, 1);
+        }
         out[0] = (pilotMean[0] * (double) pilotCount + t.accR) / n;
         out[1] = (pilotMean[1] * (double) pilotCount + t.accG) / n;
         out[2] = (pilotMean[2] * (double) pilotCount + t.accB) / n;

@@ -84,7 +84,8 @@ public final class Renderer {
             tracers.add(tracer);
             OriginalShading original = settings.shading() == Shading.ORIGINAL
                     ? new OriginalShading(tracer, geometry, lights, background) : null;
-            PixelSampler sampler = new PixelSampler(tracer, original, camera, settings, pilotVariance);
+            PixelSampler sampler = new PixelSampler(tracer, original, camera, settings, pilotVariance,
+                    () -> cancelled.get() || monitor.isCancelled());
             Runnable work = () -> {
                 double[] rgb = new double[3];
                 float[] pilot = new float[3];
@@ -95,12 +96,14 @@ public final class Renderer {
                     int tile = (int) ((long) (task % tiles) * stride % tiles);
                     int x0 = (tile % tilesX) * TILE, y0 = (tile / tilesX) * TILE;
                     int x1 = Math.min(x0 + TILE, width), y1 = Math.min(y0 + TILE, height);
+                    // Checked at every pixel (and inside it, by the sampler): a pixel of thousands of
+                    // samples is the longest a cancel waits, not a row of a tile.
                     for (int y = y0; y < y1; y++) {
-                        if (cancelled.get() || monitor.isCancelled()) {
-                            cancelled.set(true);
-                            return;
-                        }
                         for (int x = x0; x < x1; x++) {
+                            if (cancelled.get() || monitor.isCancelled()) {
+                                cancelled.set(true);
+                                return;
+                            }
                             if (second) {
                                 for (int c = 0; c < 3; c++) pilot[c] = image.get(x, y, c);
                                 if (!sampler.refine(x, y, pilot, rgb)) continue;

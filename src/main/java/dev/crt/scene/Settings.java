@@ -27,6 +27,15 @@ public record Settings(
     /** The adaptive sampler's default target: the standard error of a pixel's mean, in 8-bit levels. */
     public static final double DEFAULT_NOISE = 0.5;
 
+    /** The largest n of n×n supersampling: 4,096 samples per pixel. */
+    public static final int MAX_SUPERSAMPLING = 64;
+    /** The most lens samples per pixel sample. */
+    public static final int MAX_DOF_SAMPLES = 4096;
+    /** The most camera rays per pixel (n×n times the lens samples): a pixel then takes well under a second. */
+    public static final long MAX_SAMPLES_PER_PIXEL = 65_536;
+    /** The most camera rays of one image: about a day of rendering at 10 million rays per second. */
+    public static final long MAX_SAMPLES_PER_IMAGE = 1L << 40;
+
     public Settings {
         lights = List.copyOf(lights);
         given = Set.copyOf(given);
@@ -70,6 +79,12 @@ public record Settings(
     public Settings withSampler(Sampler s, double noiseTarget) {
         return new Settings(title, author, date, notes, lights, camera, background, supersampling,
                 dofSamples, recursionDepth, gamma, width, height, s, seed, noiseTarget, shading, given);
+    }
+
+    /** These settings with another scene seed. */
+    public Settings withSeed(long newSeed) {
+        return new Settings(title, author, date, notes, lights, camera, background, supersampling,
+                dofSamples, recursionDepth, gamma, width, height, sampler, newSeed, noise, shading, given);
     }
 
     /** These settings with another shading model. */

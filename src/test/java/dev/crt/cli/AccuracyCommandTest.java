@@ -91,6 +91,15 @@ class AccuracyCommandTest {
         assertThat(again.exitCode()).as(again.err()).isZero();
         assertThat(again.err()).contains("using the cached reference");
         assertThat(Files.readAllLines(out.resolve("accuracy.csv"))).hasSize(rows.size());
+
+        Files.delete(out.resolve("rmse.png"));
+        CliRun replot = CliRun.of("accuracy", script().toString(), "-o", out.toString(), "--replot");
+        assertThat(replot.exitCode()).as(replot.err()).isZero();
+        assertThat(ImageIO.read(out.resolve("rmse.png").toFile()).getWidth()).isEqualTo(800);
+        Files.writeString(out.resolve("accuracy.csv"), "method,spp\nfast,1\n");
+        CliRun bad = CliRun.of("accuracy", script().toString(), "-o", out.toString(), "--replot");
+        assertThat(bad.exitCode()).isEqualTo(3);
+        assertThat(bad.err()).contains("is not a CSV crt accuracy wrote");
     }
 
     @Test
@@ -105,6 +114,13 @@ class AccuracyCommandTest {
         CliRun tiny = CliRun.of("accuracy", scene, "--width", "8", "--height", "8");
         assertThat(tiny.exitCode()).isEqualTo(2);
         assertThat(tiny.err()).contains("at least 11×11");
+    }
+
+    @Test
+    void theReferenceDrawsOtherSobolPointsThanTheStudy() throws IOException {
+        dev.crt.scene.Scene scene = dev.crt.lang.CrtCompiler.compile(dev.crt.lang.ScriptFiles.read(script()),
+                dev.crt.lang.CompileOptions.DEFAULT).scene();
+        assertThat(AccuracyStudy.reference(scene, 64, 0.5).settings().seed()).isNotEqualTo(scene.settings().seed());
     }
 
     @Test

@@ -125,7 +125,7 @@ class AnimateFailureTest {
                 "needs the frame number");
         assertUsage(crt("animate", scene.toString(), "--frames", "0..3", "-o", dir.resolve("out/f%d.jpg").toString()),
                 "unsupported image type '.jpg'");
-        assertUsage(animate(ORBIT, "--frames", "0..3", "--jobs", "0"), "--jobs must be at least 1");
+        assertUsage(animate(ORBIT, "--frames", "0..3", "--jobs", "0"), "--jobs must be from 1 to 256, got 0");
         assertUsage(animate(ORBIT, "--frames", "0..3", "--time", "2"), "t is the frame number");
         assertUsage(animate(ORBIT, "--frames", "0..3", "--fps", "12"), "give --gif FILE too");
         assertUsage(animate(ORBIT, "--frames", "0..3", "--gif", dir.resolve("a.gif").toString(), "--fps", "60"), "at most 50");

@@ -11,7 +11,7 @@ class FramePatternTest {
     void frameNumberReplacesTheConversion() {
         assertThat(FramePattern.parse("frames/f_%04d.png").path(7)).isEqualTo(Path.of("frames/f_0007.png"));
         assertThat(FramePattern.parse("f%d.ppm").path(123)).isEqualTo(Path.of("f123.ppm"));
-        assertThat(FramePattern.parse("f%3d.ppm").path(5)).isEqualTo(Path.of("f  5.ppm"));
+        assertThat(FramePattern.parse("f%3d.ppm").path(5)).isEqualTo(Path.of("f005.ppm"));
         assertThat(FramePattern.parse("f_%04d.png").path(-3)).isEqualTo(Path.of("f_-003.png"));
     }
 

@@ -93,10 +93,11 @@ class RenderCommandTest {
     }
 
     @Test
-    void aMissingOutputFolderIsAFileError() throws IOException {
-        CliRun run = CliRun.of("render", script(SCENE).toString(), "-o", dir.resolve("no/such/x.png").toString());
-        assertThat(run.exitCode()).isEqualTo(3);
-        assertThat(run.err()).contains("does not exist");
+    void missingOutputFoldersAreCreatedAsAnimateDoes() throws IOException {
+        Path out = dir.resolve("no/such/x.png");
+        CliRun run = CliRun.of("render", script(SCENE).toString(), "-o", out.toString());
+        assertThat(run.exitCode()).isEqualTo(0);
+        assertThat(out).isRegularFile();
     }
 
     @Test

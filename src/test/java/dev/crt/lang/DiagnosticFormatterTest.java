@@ -37,4 +37,31 @@ class DiagnosticFormatterTest {
         assertThat(DiagnosticFormatter.format(d, "short")).isEqualTo("f.crt:3:1: error: m");
         assertThat(DiagnosticFormatter.format(d, null)).isEqualTo("f.crt:3:1: error: m");
     }
+
+    @Test
+    void theCaretCountsDisplayColumnsAsTerminalsDo() {
+        // Two CJK characters take four columns; the column in the header still counts characters.
+        String text = "s = \"漢字\" + radus\n";
+        Diagnostic d = new Diagnostic(Severity.ERROR, "m", new SourceSpan("f.crt", 1, 12, 11, 16), List.of());
+        assertThat(DiagnosticFormatter.format(d, text)).isEqualTo("f.crt:1:12: error: m\n" + text.strip() + "\n"
+                + " ".repeat(13) + "^~~~~");
+    }
+
+    @Test
+    void controlCharactersAreEscapedNotSentToTheTerminal() {
+        String text = "a\u001b[2Jb = 1\n";
+        Diagnostic d = new Diagnostic(Severity.ERROR, "m", new SourceSpan("f.crt", 1, 2, 1, 2), List.of());
+        assertThat(DiagnosticFormatter.format(d, text)).isEqualTo("f.crt:1:2: error: m\na\\u001B[2Jb = 1\n ^~~~~~")
+                .doesNotContain("\u001b");
+    }
+
+    @Test
+    void aVeryLongLineIsShownAroundTheCaret() {
+        String text = "x = " + "1 + ".repeat(10_000) + "zz\n";
+        int at = text.indexOf("zz");
+        Diagnostic d = new Diagnostic(Severity.ERROR, "m", new SourceSpan("f.crt", 1, at + 1, at, at + 2), List.of());
+        List<String> lines = DiagnosticFormatter.format(d, text).lines().toList();
+        assertThat(lines.get(1)).startsWith("…").endsWith("1 + zz").hasSizeLessThanOrEqualTo(DiagnosticFormatter.MAX_SHOWN + 2);
+        assertThat(lines.get(2).indexOf('^')).isEqualTo(lines.get(1).indexOf("zz"));
+    }
 }

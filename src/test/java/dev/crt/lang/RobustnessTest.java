@@ -78,7 +78,8 @@ class RobustnessTest {
         int depth = 2_000_000;
         CompileResult r = Scripts.compile("x = " + "(".repeat(depth) + "1" + ")".repeat(depth) + "\n");
         noInternalError(r);
-        if (r.hasErrors()) assertThat(r.diagnostics().get(0).message()).contains("nested too deeply");
+        // The time budget covers the parse: on a slow machine it may stop the parse before the stack runs out.
+        if (r.hasErrors()) assertThat(r.diagnostics().get(0).message()).containsAnyOf("nested too deeply", "parsing stopped");
     }
 
     @Test
@@ -125,7 +126,10 @@ class RobustnessTest {
         }
         script.append("Scene { b1 b2 b3 }\n");
         long start = System.nanoTime();
-        CompileResult r = Scripts.compile(script.toString());
+        // The default budget of 10 s covers the parse, which for 20 MB takes about that on the shared
+        // 2-core machine: a script this large is compiled with --time-budget, as here.
+        CompileResult r = CrtCompiler.compile(Source.of("test.crt", script.toString()), new CompileOptions(0, List.of(),
+                CompileOptions.DEFAULT_LOOP_BUDGET, java.time.Duration.ofSeconds(110)));
         System.out.printf("20 MB script (%d lines) compiled in %.1f s%n", i, (System.nanoTime() - start) / 1e9);
         noInternalError(r);
         if (r.hasErrors()) {

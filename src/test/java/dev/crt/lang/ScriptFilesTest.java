@@ -51,7 +51,7 @@ class ScriptFilesTest {
         CompileResult r = CrtCompiler.compile(s, CompileOptions.DEFAULT);
         assertThat(r.scene()).isNull();
         assertThat(DiagnosticFormatter.format(r.diagnostics().get(0), s.text()).lines().findFirst().orElseThrow())
-                .isEqualTo(dir.resolve("file.crt") + ":1:1: error: not a text file (invalid UTF-8 at byte 16)");
+                .isEqualTo(dir.resolve("file.crt") + ":2:7: error: not a text file (invalid UTF-8 at byte 16)");
     }
 
     @Test
@@ -61,6 +61,11 @@ class ScriptFilesTest {
         assertThat(r.scene()).isNull();
         assertThat(r.diagnostics()).singleElement()
                 .satisfies(d -> assertThat(d.message()).isEqualTo("not a text file (NUL byte at byte 4)"));
+        // The line is echoed with its control bytes escaped, and the caret under the NUL.
+        assertThat(DiagnosticFormatter.format(r.diagnostics().get(0), s.text()))
+                .isEqualTo(dir.resolve("file.crt") + ":1:5: error: not a text file (NUL byte at byte 4)\n"
+                        + "PK\\u0003\\u0004\\u0000\\u0000\\u0000\\u0001\n"
+                        + " ".repeat(14) + "^~~~~~");
     }
 
     @Test

@@ -30,9 +30,11 @@ class SyntaxErrorsTest {
     void severalErrorsInOneFileAreAllReported() {
         String script = "a = (1 + 2\nb = Sphere { radius 1 }\nc = 3 +\nScene { a b }\nd = ]\n";
         List<Diagnostic> es = errors(script);
-        assertThat(es).extracting(d -> d.span().line()).containsExactly(2, 2, 4, 5);
+        assertThat(es).extracting(d -> d.span().line()).containsExactly(2, 2, 3, 5);
         at(es.get(0), 2, 1, "expected ')' to close '(' opened at 1:5 before 'b'");
         at(es.get(1), 2, 21, "expected '->' before '1'");
+        // `c = 3 +` was cut at the end of its line: that is where the mistake is, not at 'Scene'.
+        at(es.get(2), 3, 7, "expected an expression after '+' at the end of line 3");
         assertThat(es).allSatisfy(d -> assertThat(d.message()).doesNotContain("{").doesNotContain("<EOF>"));
     }
 
@@ -80,5 +82,36 @@ class SyntaxErrorsTest {
     void syntaxErrorsStopBeforeEvaluation() {
         List<Diagnostic> es = errors("x = sqrt(-1)\ny = )\n");
         assertThat(es).singleElement().satisfies(d -> assertThat(d.span().line()).isEqualTo(2));
+    }
+
+    @Test
+    void anAttributeGivenWithEqualsSaysArrow() {
+        at(errors("s = Sphere { radius = 1 }\n").get(0), 1, 21,
+                "unexpected '='; attributes are given with '->', as in 'radius -> value'");
+        at(errors("Settings { width = 10 }\n").get(0), 1, 18,
+                "unexpected '='; attributes are given with '->', as in 'width -> value'");
+    }
+
+    @Test
+    void aCapitalisedKeywordSaysKeywordsAreLowercase() {
+        at(errors("x = 1\nIf (x > 0) { y = 2 }\n").get(0), 2, 4, "unexpected '(' after 'If' (keywords are lowercase: 'if')");
+        at(errors("While (true) { }\n").get(0), 1, 7, "unexpected '(' after 'While' (keywords are lowercase: 'while')");
+    }
+
+    @Test
+    void anExpressionCutAtALineEndIsReportedWhereItEnds() {
+        at(errors("x = 2 *\n\nScene { }\n").get(0), 1, 7, "expected an expression after '*' at the end of line 1");
+        // `y` is taken as the missing operand, so the parse fails at '=': the cut is still the mistake.
+        at(errors("x = 1 +\ny = 2\n").get(0), 1, 7, "expected an expression after '+' at the end of line 1");
+        at(errors("b = x &&\n").get(0), 1, 7, "expected an expression after '&&' at the end of line 1");
+    }
+
+    @Test
+    void aLineThatContinuesTheOneBeforeSaysSo() {
+        at(errors("a = Sphere { }\n[a, a]\n").get(0), 2, 3, "unexpected ',' (the '[' at the start of line 2 continues"
+                + " the expression of the line before it: a newline does not end a statement)");
+        List<Diagnostic> evaluated = Scripts.compile("a = 1\nb = a\n- Sphere { }\n").diagnostics();
+        assertThat(evaluated.get(0).message()).isEqualTo("operator '-' cannot apply to number and entity (the '-' at the"
+                + " start of line 3 continues the expression of the line before it: a newline does not end a statement)");
     }
 }

@@ -20,9 +20,21 @@ class TimeVariableTest {
     }
 
     @Test
+    void everyWholeTimePicksItsItem() {
+        for (int t = 0; t < 8; t++) {
+            assertThat(((Sphere) at(t).scene().entities().get(0)).radius()).as("t = %d", t).isEqualTo(t % 4 + 1);
+        }
+    }
+
+    @Test
     void aFractionalTimeIsAFloatAndCannotIndex() {
         CompileResult r = at(2.5);
-        assertThat(r.hasErrors()).isTrue();
-        assertThat(r.diagnostics().get(0).span().line()).isEqualTo(2);
+        assertThat(r.scene()).isNull();
+        // Exactly one error, the index's, at the index expression 't % 4'.
+        assertThat(r.diagnostics()).singleElement().satisfies(d -> {
+            assertThat(d.message()).isEqualTo("an index must be an integer, got the float 2.5");
+            assertThat(d.span().line()).isEqualTo(2);
+            assertThat(d.span().column()).isEqualTo(SCRIPT.lines().toList().get(1).indexOf("t % 4") + 1);
+        });
     }
 }

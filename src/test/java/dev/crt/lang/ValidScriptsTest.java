@@ -314,7 +314,8 @@ class ValidScriptsTest {
         assertThat(((Csg) s.entities().get(5)).operation()).isEqualTo(CsgOperation.UNION);
         assertThat(number("-(1\n- 3)")).as("a line starting with - continues").isEqualTo(2);
         assertThat(Scripts.compile(CAMERA + "s = Sphere { }\nx = 1\n(s)\n").diagnostics().get(0).message())
-                .as("a line starting with ( continues: 1(s) is a call").isEqualTo("cannot call number: only macros and functions take arguments");
+                .as("a line starting with ( continues: 1(s) is a call").isEqualTo("cannot call number: only macros and functions take arguments (the '(' at the start of line 4"
+                        + " continues the expression of the line before it: a newline does not end a statement)");
     }
 
     @Test

@@ -99,7 +99,26 @@ class IntersectionProperties {
         d[axis] = r.nextBoolean() ? 0.0 : -0.0;
         Vec3 dir = new Vec3(d[0], d[1], d[2]).normalize();
         boolean hit = t.closestHit(o[0], o[1], o[2], dir.x(), dir.y(), dir.z(), Double.POSITIVE_INFINITY);
+        // Grazing along a face may count as a hit or not, but never with a NaN or negative distance.
         if (hit) assertThat(Double.isFinite(t.hit.t) && t.hit.t > 0).isTrue();
+        // From one unit outside that face, aimed at a point well inside the box, the ray must hit,
+        // before that point, on the box's surface: an intersector that always misses fails here.
+        o[axis] += o[axis] == lo.get(axis) ? -1 : 1;
+        Vec3 origin = new Vec3(o[0], o[1], o[2]);
+        Vec3 inner = new Vec3(lo.x() + 0.1 + r.nextDouble() * (hi.x() - lo.x() - 0.2),
+                lo.y() + 0.1 + r.nextDouble() * (hi.y() - lo.y() - 0.2), lo.z() + 0.1 + r.nextDouble() * (hi.z() - lo.z() - 0.2));
+        Vec3 toInner = inner.minus(origin).normalize();
+        assertThat(t.closestHit(origin.x(), origin.y(), origin.z(), toInner.x(), toInner.y(), toInner.z(),
+                Double.POSITIVE_INFINITY)).as("a ray from outside to a point inside the box hits it").isTrue();
+        assertThat(t.hit.t).isPositive().isLessThan(inner.minus(origin).length());
+        Vec3 p = origin.plus(toInner.times(t.hit.t));
+        double outside = 0, onFace = Double.POSITIVE_INFINITY;
+        for (int k = 0; k < 3; k++) {
+            outside = Math.max(outside, Math.max(lo.get(k) - p.get(k), p.get(k) - hi.get(k)));
+            onFace = Math.min(onFace, Math.min(Math.abs(p.get(k) - lo.get(k)), Math.abs(p.get(k) - hi.get(k))));
+        }
+        assertThat(outside).as("the hit point is not outside the box").isLessThan(1e-9);
+        assertThat(onFace).as("the hit point lies on a face").isLessThan(1e-9);
     }
 
     /** An entity of the chosen kind with random placement. */

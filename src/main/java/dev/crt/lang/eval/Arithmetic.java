@@ -72,13 +72,17 @@ final class Arithmetic {
                 return new ListValue(all);
             }
         }
-        throw badOperands(op, a, b, ev.span(where), ev);
+        throw ev.error(badOperandsMessage(op, a, b) + Evaluator.continuation(where), ev.span(where));
     }
 
     static ScriptError badOperands(String op, Value a, Value b, SourceSpan at, Evaluator ev) {
+        return ev.error(badOperandsMessage(op, a, b), at);
+    }
+
+    private static String badOperandsMessage(String op, Value a, Value b) {
         String hint = op.equals("^") && a instanceof NumberValue && b instanceof NumberValue
                 ? " (for powers, use pow(a, b))" : "";
-        return ev.error("operator '" + op + "' cannot apply to " + a.typeName() + " and " + b.typeName() + hint, at);
+        return "operator '" + op + "' cannot apply to " + a.typeName() + " and " + b.typeName() + hint;
     }
 
     private static NumberValue number(double r, boolean integral, String op, ParserRuleContext where, Evaluator ev) {

@@ -10,8 +10,10 @@ import java.nio.file.InvalidPathException;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.HashMap;
+import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Map;
+import java.util.Set;
 
 /**
  * Finds and decodes the files a script names (section 11): an existing absolute path as given,
@@ -32,9 +34,10 @@ final class Assets {
 
     Assets(Path scriptFolder, List<Path> assetDirs) {
         this.scriptFolder = scriptFolder != null ? scriptFolder : Path.of("").toAbsolutePath();
-        List<Path> folders = new ArrayList<>(assetDirs);
+        Set<Path> folders = new LinkedHashSet<>();
+        for (Path dir : assetDirs) folders.add(dir.toAbsolutePath().normalize());
         String shipped = System.getProperty("crt.assets");
-        if (shipped != null && !shipped.isBlank()) folders.add(Path.of(shipped));
+        if (shipped != null && !shipped.isBlank()) folders.add(Path.of(shipped).toAbsolutePath().normalize());
         this.assetFolders = List.copyOf(folders);
     }
 
@@ -68,7 +71,8 @@ final class Assets {
 
     private Path find(String name, String what) throws AssetProblem {
         if (name.isEmpty()) throw new AssetProblem("the " + what + " file name is empty");
-        List<Path> searched = new ArrayList<>();
+        // A set: the script's folder may also be an asset folder, and each place is named once.
+        Set<Path> searched = new LinkedHashSet<>();
         try {
             Path given = Path.of(name);
             if (given.isAbsolute()) {

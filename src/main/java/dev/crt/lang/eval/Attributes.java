@@ -140,6 +140,16 @@ final class Attributes {
         return n.value();
     }
 
+    /** An integer attribute from {@code minimum} to {@code maximum}; out of range is an error naming both. */
+    int integer(String name, int fallback, int minimum, int maximum) {
+        int value = integer(name, fallback, minimum);
+        if (value > maximum) {
+            error(name, name + " must be an integer from " + minimum + " to " + maximum + ", got " + value);
+            return fallback;
+        }
+        return value;
+    }
+
     int integer(String name, int fallback, int minimum) {
         Given g = given.get(name);
         if (g == null) return fallback;

@@ -15,11 +15,11 @@ final class Budget {
     private int ticks;
     private volatile boolean cancelled;
 
-    Budget(long loopLimit, Duration timeLimit) {
+    Budget(long loopLimit, Duration timeLimit, long startNanos) {
         this.loopLimit = loopLimit;
         this.timeLimit = timeLimit;
         this.timeLimitNanos = nanos(timeLimit);
-        this.startNanos = System.nanoTime();
+        this.startNanos = startNanos;
     }
 
     /** Why evaluation must stop now, or null to go on. */

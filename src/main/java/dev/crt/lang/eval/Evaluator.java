@@ -75,9 +75,10 @@ public final class Evaluator extends CRTBaseVisitor<Value> {
     private boolean sawScene;
     private int errors;
 
-    public Evaluator(TextPositions positions, CompileOptions options, Path scriptFolder) {
+    /** {@code startNanos} (System.nanoTime) is when the compile began: its time budget counts from then. */
+    public Evaluator(TextPositions positions, CompileOptions options, Path scriptFolder, long startNanos) {
         this.positions = positions;
-        this.budget = new Budget(options.loopBudget(), options.timeBudget());
+        this.budget = new Budget(options.loopBudget(), options.timeBudget(), startNanos);
         this.objects = new ObjectBuilder(this, new Assets(scriptFolder, options.assetDirs()));
         this.settings = new SettingsState();
         // A whole time (every frame number of crt animate) is an integer, so `xs[t]` and `t % 2` work.
@@ -563,7 +564,8 @@ public final class Evaluator extends CRTBaseVisitor<Value> {
         int length;
         if (target instanceof ListValue list) length = list.items().size();
         else if (target instanceof VectorValue || target instanceof ColorValue) length = 3;
-        else throw error("cannot index " + describe(target) + ": only lists, vec3 and rgb have elements", span(ctx));
+        else throw error("cannot index " + describe(target) + ": only lists, vec3 and rgb have elements"
+                + continuation(ctx), span(ctx));
         double i = n.value();
         if (i < 0 || i >= length) {
             throw error("index " + n + " is out of range for a " + target.typeName() + " of length " + length, where);
@@ -667,7 +669,8 @@ public final class Evaluator extends CRTBaseVisitor<Value> {
 
     private Value callMacro(String name, Value callee, CRTParser.CallContext ctx) {
         if (!(callee instanceof MacroValue macro)) {
-            throw error("cannot call " + describe(callee) + (name != null ? " '" + name + "'" : "") + ": only macros and functions take arguments", span(ctx));
+            throw error("cannot call " + describe(callee) + (name != null ? " '" + name + "'" : "")
+                    + ": only macros and functions take arguments" + continuation(ctx), span(ctx));
         }
         String label = name != null ? "macro '" + name + "'" : "the macro";
         List<String> params = macro.parameters();
@@ -896,6 +899,22 @@ public final class Evaluator extends CRTBaseVisitor<Value> {
     }
 
     ScriptError error(String message, SourceSpan where) { return new ScriptError(message, where, callChain()); }
+
+    /**
+     * When the operator of {@code ctx} (its second child: '(', '[', '+', '-' or '^') starts a line,
+     * the sentence that says that line continues the expression before it; else "". Newlines end
+     * nothing in CRT, and a mistake of this kind otherwise reads as nonsense.
+     */
+    static String continuation(ParserRuleContext ctx) {
+        if (ctx.getChildCount() < 2 || !(ctx.getChild(1) instanceof org.antlr.v4.runtime.tree.TerminalNode op)
+                || !(ctx.getChild(0) instanceof ParserRuleContext left) || left.getStop() == null) {
+            return "";
+        }
+        Token t = op.getSymbol();
+        if (t.getLine() <= left.getStop().getLine()) return "";
+        return " (the '" + t.getText() + "' at the start of line " + t.getLine()
+                + " continues the expression of the line before it: a newline does not end a statement)";
+    }
 
     private ScriptError badOperands(String op, Value a, Value b, ParserRuleContext ctx) {
         return Arithmetic.badOperands(op, a, b, span(ctx), this);

@@ -36,8 +36,8 @@ final class SettingsState {
         List<Light> lights = a.has("lights") ? lights(a) : s.lights();
         Camera camera = a.has("camera") ? a.camera("camera") : s.camera();
         Background background = a.has("background") ? a.background("background") : s.background();
-        int supersampling = a.integer("supersampling", s.supersampling(), 1);
-        int dofSamples = a.integer("dofsamples", s.dofSamples(), 1);
+        int supersampling = a.integer("supersampling", s.supersampling(), 1, Settings.MAX_SUPERSAMPLING);
+        int dofSamples = a.integer("dofsamples", s.dofSamples(), 1, Settings.MAX_DOF_SAMPLES);
         int recursionDepth = a.integer("recursiondepth", s.recursionDepth(), 0);
         double gamma = a.number("gamma", s.gamma(), Attributes.Range.POSITIVE);
         int width = a.integer("width", s.width(), 1);

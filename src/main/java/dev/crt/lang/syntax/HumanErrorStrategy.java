@@ -22,6 +22,7 @@ import org.antlr.v4.runtime.misc.IntervalSet;
 final class HumanErrorStrategy extends DefaultErrorStrategy {
     private static final int[] EXPRESSION_STARTS = {CRTParser.INT, CRTParser.IDENT, CRTParser.LPAREN};
     private static final List<String> MODIFIERS = List.of("translate", "rotate", "scale");
+    private static final List<String> CONTROL_WORDS = List.of("if", "else", "while");
 
     private final TextPositions positions;
 
@@ -47,11 +48,41 @@ final class HumanErrorStrategy extends DefaultErrorStrategy {
 
     private static void report(Parser parser, Token token, String message, org.antlr.v4.runtime.RecognitionException e) {
         Token word = misspeltModifier(parser, token);
+        Token cut = operatorAtLineEnd(parser, token);
         if (word != null) {
             parser.notifyErrorListeners(word, unknownModifier(word.getText()), e);
+        } else if (cut != null) {
+            parser.notifyErrorListeners(cut, "expected an expression after '" + cut.getText() + "' at the end of line "
+                    + cut.getLine(), e);
         } else {
             parser.notifyErrorListeners(token, message, e);
         }
+    }
+
+    /**
+     * An operator that ends its line when the parse fails on a later line: the expression was cut
+     * there (`x = 2 *` newline `Scene {…}`, or `x = 1 +` newline `y = 2`, where `y` was taken as the
+     * missing operand), and that is where the mistake is, not at the next line's token.
+     */
+    private static Token operatorAtLineEnd(Parser parser, Token offending) {
+        Token before = previous(parser, offending);
+        if (before == null) return null;
+        if (offending.getType() == CRTParser.ASSIGN && before.getType() == CRTParser.IDENT) {
+            Token operator = previous(parser, before);
+            if (operator != null && needsOperand(operator) && operator.getLine() < before.getLine()) return operator;
+            return null;
+        }
+        boolean later = offending.getType() == Token.EOF || before.getLine() < offending.getLine();
+        return later && needsOperand(before) ? before : null;
+    }
+
+    private static boolean needsOperand(Token token) {
+        return switch (token.getType()) {
+            case CRTParser.PLUS, CRTParser.MINUS, CRTParser.STAR, CRTParser.SLASH, CRTParser.PERCENT, CRTParser.CARET,
+                    CRTParser.LT, CRTParser.GT, CRTParser.LE, CRTParser.GE, CRTParser.EQ, CRTParser.NE, CRTParser.AND,
+                    CRTParser.OR, CRTParser.QUESTION, CRTParser.COLON, CRTParser.ASSIGN, CRTParser.ARROW, CRTParser.BANG -> true;
+            default -> false;
+        };
     }
 
     private static String unknownModifier(String word) {
@@ -122,6 +153,17 @@ final class HumanErrorStrategy extends DefaultErrorStrategy {
             if (closes != null && !closes.startsWith("expected '" + token.getText() + "'")) return message + "; " + closes;
         }
         Token before = previous(parser, token);
+        if (before != null && before.getType() == CRTParser.NAME && CONTROL_WORDS.contains(before.getText().toLowerCase(java.util.Locale.ROOT))) {
+            // `If (x > 1) {…}`: a keyword with a capital reads as an object type.
+            return message + " after '" + before.getText() + "' (keywords are lowercase: '"
+                    + before.getText().toLowerCase(java.util.Locale.ROOT) + "')";
+        }
+        if (token.getType() == CRTParser.ASSIGN && inside(parser.getContext(), CRTParser.AttributeContext.class)) {
+            String name = before != null && before.getType() == CRTParser.IDENT ? before.getText() : "name";
+            return message + "; attributes are given with '->', as in '" + name + " -> value'";
+        }
+        String continued = continuation(parser.getContext());
+        if (continued != null) return message + continued;
         if (token.getType() == CRTParser.ASSIGN && before != null && isControlWord(before)) {
             return message + " ('" + before.getText() + "' is a reserved word and cannot name a variable)";
         }
@@ -139,6 +181,25 @@ final class HumanErrorStrategy extends DefaultErrorStrategy {
             message += "; " + expectation(parser, expected);
         }
         return message;
+    }
+
+    /**
+     * Inside an index or a call whose '[' or '(' starts a line: the sentence that says the line
+     * continues the expression before it (newlines end nothing in CRT), else null.
+     */
+    private static String continuation(ParserRuleContext ctx) {
+        for (ParserRuleContext c = ctx; c != null; c = c.getParent()) {
+            if (!(c instanceof CRTParser.IndexContext || c instanceof CRTParser.CallContext)) continue;
+            if (c.getChildCount() < 2 || !(c.getChild(0) instanceof ParserRuleContext left)
+                    || !(c.getChild(1) instanceof org.antlr.v4.runtime.tree.TerminalNode open) || left.getStop() == null) {
+                return null;
+            }
+            Token t = open.getSymbol();
+            if (t.getLine() <= left.getStop().getLine()) return null;
+            return " (the '" + t.getText() + "' at the start of line " + t.getLine()
+                    + " continues the expression of the line before it: a newline does not end a statement)";
+        }
+        return null;
     }
 
     /** The token the parser saw before {@code token}, or null at the start. */

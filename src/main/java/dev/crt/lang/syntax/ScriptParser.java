@@ -5,6 +5,7 @@ import dev.crt.lang.Severity;
 import dev.crt.lang.TextPositions;
 import dev.crt.lang.parser.CRTLexer;
 import dev.crt.lang.parser.CRTParser;
+import java.time.Duration;
 import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.HashMap;
@@ -21,6 +22,7 @@ import org.antlr.v4.runtime.CommonTokenFactory;
 import org.antlr.v4.runtime.CommonTokenStream;
 import org.antlr.v4.runtime.Token;
 import org.antlr.v4.runtime.TokenSource;
+import org.antlr.v4.runtime.TokenStream;
 import org.antlr.v4.runtime.UnbufferedTokenStream;
 import org.antlr.v4.runtime.atn.PredictionMode;
 import org.antlr.v4.runtime.misc.Pair;
@@ -54,9 +56,28 @@ public final class ScriptParser {
      */
     public record Parsed(Iterator<CRTParser.StatementContext> statements, List<Diagnostic> errors, Set<String> assignedNames) {}
 
+    /** Parses with no time limit. */
     public static Parsed parse(TextPositions positions) {
+        return parse(positions, new ParseClock(System.nanoTime(), Duration.ofNanos(Long.MAX_VALUE)));
+    }
+
+    /**
+     * Parses, stopping with a diagnostic once {@code clock}'s budget is spent: the time budget of
+     * a compile covers its parse, which on a huge script is most of the compile.
+     */
+    public static Parsed parse(TextPositions positions, ParseClock clock) {
+        try {
+            return parseWithin(positions, clock);
+        } catch (ParseClock.OutOfTime out) {
+            SyntaxErrors stopped = new SyntaxErrors(positions);
+            stopped.add(out.at(), out.getMessage());
+            return new Parsed(null, stopped.diagnostics(), Set.of());
+        }
+    }
+
+    private static Parsed parseWithin(TextPositions positions, ParseClock clock) {
         CharStream chars = CharStreams.fromString(positions.text());
-        CRTLexer lexer = new CRTLexer(chars);
+        CRTLexer lexer = clock.lexer(chars);
         lexer.removeErrorListeners();
         CommonTokenStream tokens = new CommonTokenStream(lexer);
         tokens.fill();
@@ -67,11 +88,7 @@ public final class ScriptParser {
         // Two stages, as ANTLR recommends: the fast SLL prediction, without building a tree,
         // succeeds for almost every script; only a script it fails on is parsed again with full
         // LL and error recovery, which reports the errors.
-        CRTParser parser = new CRTParser(tokens);
-        parser.removeErrorListeners();
-        parser.setBuildParseTree(false);
-        parser.getInterpreter().setPredictionMode(PredictionMode.SLL);
-        parser.setErrorHandler(new BailErrorStrategy());
+        CRTParser parser = checkingParser(tokens, clock);
         PredictionMode enough = PredictionMode.SLL;
         try {
             parser.script();
@@ -91,7 +108,18 @@ public final class ScriptParser {
         }
         List<Diagnostic> found = errors.diagnostics();
         if (!found.isEmpty()) return new Parsed(null, limit(found), assigned);
-        return new Parsed(new Statements(chars, enough), List.of(), assigned);
+        return new Parsed(new Statements(chars, enough, clock), List.of(), assigned);
+    }
+
+    /** The parser of the first, fast stage: SLL prediction, no tree, it gives up at the first error. */
+    static CRTParser checkingParser(TokenStream tokens, ParseClock clock) {
+        CRTParser parser = clock.parser(tokens);
+        GreedyOperators.install(parser);
+        parser.removeErrorListeners();
+        parser.setBuildParseTree(false);
+        parser.getInterpreter().setPredictionMode(PredictionMode.SLL);
+        parser.setErrorHandler(new BailErrorStrategy());
+        return parser;
     }
 
     /** The statements of a script known to be free of syntax errors, parsed as they are asked for. */
@@ -99,13 +127,14 @@ public final class ScriptParser {
         private final CRTParser parser;
 
         /** {@code mode} is the prediction that sufficed for the whole script in the check. */
-        Statements(CharStream chars, PredictionMode mode) {
+        Statements(CharStream chars, PredictionMode mode, ParseClock clock) {
             chars.seek(0);
-            CRTLexer lexer = new CRTLexer(chars);
+            CRTLexer lexer = clock.lexer(chars);
             lexer.removeErrorListeners();
             lexer.setTokenFactory(new SharedTextTokens());
             // Unbuffered: tokens no longer needed by a statement's tree are garbage once it has run.
-            parser = new CRTParser(new UnbufferedTokenStream<>(lexer));
+            parser = clock.parser(new UnbufferedTokenStream<>(lexer));
+            GreedyOperators.install(parser);
             parser.removeErrorListeners();
             parser.setTrimParseTree(true);
             parser.getInterpreter().setPredictionMode(mode);

@@ -1,0 +1,85 @@
+package dev.crt.live;
+
+import dev.crt.geom.Aabb;
+import dev.crt.scene.Background;
+import dev.crt.scene.Camera;
+
+/**
+ * A scene flattened for the GPU by {@link SceneConverter}: one float array of vec4 texels holding
+ * every top-level entity (a header, its CSG program and its primitives), the instance lists that
+ * draw them, the lights as uniform arrays, and what the background and camera need.
+ *
+ * <p>Layout of an entity at texel {@code o}: {@code o} = (leaves, program length, entity index,
+ * scale), {@code o+1} = (bounds min, unbounded flag), {@code o+2} = (bounds max, 0), then one
+ * texel per program step (opcode, leaf, 0, 0) in postfix order, then {@link #LEAF_TEXELS} texels
+ * per primitive: (kind, 0, 0, 0), three rows of the world-to-local matrix (a plane keeps its
+ * world normal and offset in the first), local box min, local box max, (colour, diffuse),
+ * (specular, shininess, transparency, reflectivity), (emission, 0).
+ */
+public final class GpuScene {
+    public static final int HEADER_TEXELS = 3;
+    public static final int LEAF_TEXELS = 9;
+    /** Primitive kinds as the shader reads them. */
+    public static final int SPHERE = 0, BOX = 1, PLANE = 2, EMPTY = 3;
+    /** Program opcodes as the shader reads them. */
+    public static final int OP_LEAF = 0, OP_UNION = 1, OP_INTERSECTION = 2, OP_DIFFERENCE = 3;
+    /** The shader's limits: primitives per top-level entity (a 32-bit inside mask) and lights. */
+    public static final int MAX_LEAVES = 32, MAX_LIGHTS = 16;
+    /** Light kinds as the shader reads them. */
+    public static final int POINT_LIGHT = 0, PARALLEL_LIGHT = 1;
+
+    final float[] data;
+    final int texels;
+    /** Texel offset of each top-level entity's header, by entity index. */
+    final int[] entityOffset;
+    /** World bounds of each top-level entity (infinite for those reaching a plane's half-space, empty when nothing shows). */
+    final Aabb[] entityBounds;
+    /** Bounded entities: their header offsets and boxes (min xyz, max xyz) for the proxy cubes. */
+    final int[] boundedOffsets;
+    final float[] boundedBoxes;
+    /** How many of the bounded entities, listed first, are a single primitive (drawn without the CSG walk). */
+    final int boundedPrimitives;
+    /** Entities with infinite bounds, drawn by a full-screen pass. */
+    final int[] unboundedOffsets;
+    /** Per light three vec4: (kind, position or direction towards the light), (colour, ambient), (falloff, 0, 0, 0). */
+    final float[] lights;
+    final int lightCount;
+    final Background background;
+    final double gamma;
+    final Camera camera;
+    final Aabb bounds;
+
+    GpuScene(float[] data, int texels, int[] entityOffset, Aabb[] entityBounds, int[] boundedOffsets,
+            float[] boundedBoxes, int boundedPrimitives, int[] unboundedOffsets, float[] lights, int lightCount, Background background,
+            double gamma, Camera camera, Aabb bounds) {
+        this.data = data;
+        this.texels = texels;
+        this.entityOffset = entityOffset;
+        this.entityBounds = entityBounds;
+        this.boundedOffsets = boundedOffsets;
+        this.boundedBoxes = boundedBoxes;
+        this.boundedPrimitives = boundedPrimitives;
+        this.unboundedOffsets = unboundedOffsets;
+        this.lights = lights;
+        this.lightCount = lightCount;
+        this.background = background;
+        this.gamma = gamma;
+        this.camera = camera;
+        this.bounds = bounds;
+    }
+
+    /** Number of top-level entities. */
+    public int entityCount() { return entityOffset.length; }
+
+    /** World bounds of top-level entity {@code i}. */
+    public Aabb entityBounds(int i) { return entityBounds[i]; }
+
+    /** The union of the finite bounds of every entity (empty when there is none). */
+    public Aabb bounds() { return bounds; }
+
+    /** The scene's own camera. */
+    public Camera camera() { return camera; }
+
+    /** The texels as floats, four per texel (a copy). */
+    public float[] texelData() { return java.util.Arrays.copyOf(data, texels * 4); }
+}

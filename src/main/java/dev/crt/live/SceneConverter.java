@@ -1,0 +1,280 @@
+package dev.crt.live;
+
+import dev.crt.geom.Aabb;
+import dev.crt.geom.Transform;
+import dev.crt.geom.Vec3;
+import dev.crt.scene.Box;
+import dev.crt.scene.Csg;
+import dev.crt.scene.Entity;
+import dev.crt.scene.Light;
+import dev.crt.scene.Material;
+import dev.crt.scene.ParallelLight;
+import dev.crt.scene.Plane;
+import dev.crt.scene.PointLight;
+import dev.crt.scene.Primitive;
+import dev.crt.scene.Scene;
+import dev.crt.scene.Sphere;
+import java.util.Arrays;
+import java.util.List;
+
+/**
+ * Turns a {@link Scene} into {@link GpuScene} data: each top-level entity becomes one block that
+ * the fragment shader ray-casts exactly (primitives in their local frames, CSG as a postfix
+ * program), so the live view shows the same solids as the ray tracer. Kinds it does not know are
+ * refused with an {@link UnsupportedSceneException}, never drawn wrongly.
+ */
+public final class SceneConverter {
+    private float[] data = new float[4096];
+    private int size;
+
+    /** Converts {@code scene}; throws {@link UnsupportedSceneException} for what the live view cannot draw. */
+    public static GpuScene convert(Scene scene) {
+        return new SceneConverter().run(scene);
+    }
+
+    private GpuScene run(Scene scene) {
+        List<Entity> entities = scene.entities();
+        int n = entities.size();
+        int[] offsets = new int[n];
+        Aabb[] bounds = new Aabb[n];
+        // Bounded entities: one-primitive ones from the front, CSG ones from the back, then reversed into place.
+        int[] bounded = new int[n];
+        float[] boxes = new float[6 * n];
+        int nc = 0;
+        int[] unbounded = new int[n];
+        int nb = 0, nu = 0;
+        Aabb all = Aabb.EMPTY;
+        for (int i = 0; i < n; i++) {
+            Entity e = entities.get(i);
+            offsets[i] = size / 4;
+            Aabb b = entity(e, i);
+            bounds[i] = b;
+            if (b.isEmpty()) continue;
+            if (b.isFinite()) {
+                int at = e instanceof Primitive ? nb++ : n - 1 - nc++;
+                bounded[at] = offsets[i];
+                put(boxes, 6 * at, b);
+                all = all.union(b);
+            } else {
+                unbounded[nu++] = offsets[i];
+            }
+        }
+        List<Light> sceneLights = scene.settings().lights();
+        if (sceneLights.size() > GpuScene.MAX_LIGHTS) {
+            throw new UnsupportedSceneException("the live view shows at most " + GpuScene.MAX_LIGHTS
+                    + " lights; this scene has " + sceneLights.size());
+        }
+        float[] lights = new float[12 * sceneLights.size()];
+        for (int i = 0; i < sceneLights.size(); i++) light(sceneLights.get(i), lights, 12 * i);
+        int[] boundedAll = new int[nb + nc];
+        float[] boxesAll = new float[6 * (nb + nc)];
+        System.arraycopy(bounded, 0, boundedAll, 0, nb);
+        System.arraycopy(boxes, 0, boxesAll, 0, 6 * nb);
+        for (int k = 0; k < nc; k++) {
+            boundedAll[nb + k] = bounded[n - nc + k];
+            System.arraycopy(boxes, 6 * (n - nc + k), boxesAll, 6 * (nb + k), 6);
+        }
+        return new GpuScene(data, size / 4, offsets, bounds, boundedAll, boxesAll, nb, Arrays.copyOf(unbounded, nu), lights, sceneLights.size(),
+                scene.settings().background(), scene.settings().gamma(), scene.settings().camera(), all);
+    }
+
+    private static void put(float[] boxes, int at, Aabb b) {
+        boxes[at] = (float) b.min().x();
+        boxes[at + 1] = (float) b.min().y();
+        boxes[at + 2] = (float) b.min().z();
+        boxes[at + 3] = (float) b.max().x();
+        boxes[at + 4] = (float) b.max().y();
+        boxes[at + 5] = (float) b.max().z();
+    }
+
+    private static void light(Light light, float[] out, int at) {
+        Vec3 p;
+        int kind;
+        double falloff;
+        if (light instanceof PointLight pl) {
+            kind = GpuScene.POINT_LIGHT;
+            p = pl.origin();
+            falloff = pl.falloff();
+        } else if (light instanceof ParallelLight pl) {
+            kind = GpuScene.PARALLEL_LIGHT;
+            p = pl.towardsLight();
+            falloff = 0;
+        } else {
+            throw new UnsupportedSceneException("the live view cannot show a " + kindName(light) + " yet");
+        }
+        out[at] = kind;
+        out[at + 1] = (float) p.x();
+        out[at + 2] = (float) p.y();
+        out[at + 3] = (float) p.z();
+        out[at + 4] = (float) light.color().r();
+        out[at + 5] = (float) light.color().g();
+        out[at + 6] = (float) light.color().b();
+        out[at + 7] = (float) light.ambient();
+        out[at + 8] = (float) falloff;
+    }
+
+    /** Writes entity {@code e}'s block; returns its world bounds. */
+    private Aabb entity(Entity e, int index) {
+        int header = size;
+        reserve(4 * GpuScene.HEADER_TEXELS);
+        size += 4 * GpuScene.HEADER_TEXELS;
+        steps = 0;
+        leafCount = 0;
+        program(e);
+        if (leafCount > GpuScene.MAX_LEAVES) {
+            throw new UnsupportedSceneException("the live view draws CSG of at most " + GpuScene.MAX_LEAVES
+                    + " primitives; the entity at " + e.span() + " has " + leafCount);
+        }
+        reserve(4 * steps);
+        for (int s = 0; s < steps; s++) {
+            data[size++] = program[2 * s];
+            data[size++] = program[2 * s + 1];
+            data[size++] = 0;
+            data[size++] = 0;
+        }
+        Aabb b = leaves(e, Transform.IDENTITY);
+        double scale = b.isFinite() && !b.isEmpty()
+                ? Math.max(maxAbs(b.min()), maxAbs(b.max())) : 1;
+        data[header] = leafCount;
+        data[header + 1] = steps;
+        data[header + 2] = index;
+        data[header + 3] = (float) scale;
+        boolean finite = b.isFinite() && !b.isEmpty();
+        data[header + 4] = finite ? (float) b.min().x() : -1e30f;
+        data[header + 5] = finite ? (float) b.min().y() : -1e30f;
+        data[header + 6] = finite ? (float) b.min().z() : -1e30f;
+        data[header + 7] = finite ? 0 : 1;
+        data[header + 8] = finite ? (float) b.max().x() : 1e30f;
+        data[header + 9] = finite ? (float) b.max().y() : 1e30f;
+        data[header + 10] = finite ? (float) b.max().z() : 1e30f;
+        data[header + 11] = 0;
+        return b;
+    }
+
+    /** The postfix program of the entity being converted: (opcode, leaf) pairs. */
+    private int[] program = new int[64];
+    private int steps;
+    private int leafCount;
+
+    private void program(Entity e) {
+        if (e instanceof Primitive) {
+            step(GpuScene.OP_LEAF, leafCount++);
+        } else if (e instanceof Csg c) {
+            program(c.left());
+            program(c.right());
+            step(switch (c.operation()) {
+                case UNION -> GpuScene.OP_UNION;
+                case INTERSECTION -> GpuScene.OP_INTERSECTION;
+                case DIFFERENCE -> GpuScene.OP_DIFFERENCE;
+            }, 0);
+        } else {
+            throw new UnsupportedSceneException("the live view cannot draw a " + kindName(e) + " yet");
+        }
+    }
+
+    private void step(int opcode, int leaf) {
+        if (2 * steps + 2 > program.length) program = Arrays.copyOf(program, 2 * program.length);
+        program[2 * steps] = opcode;
+        program[2 * steps + 1] = leaf;
+        steps++;
+    }
+
+    /** Writes the primitives of {@code e} (in program order) placed by {@code outer}; returns the bounds of the solid. */
+    private Aabb leaves(Entity e, Transform outer) {
+        Transform t = e.transform().then(outer);
+        if (e instanceof Sphere s) return sphere(s, t);
+        if (e instanceof Box b) return box(b, t);
+        if (e instanceof Plane p) return plane(p, t);
+        if (e instanceof Csg c) {
+            Aabb left = leaves(c.left(), t);
+            Aabb right = leaves(c.right(), t);
+            return switch (c.operation()) {
+                case UNION -> left.union(right);
+                case INTERSECTION -> left.intersection(right);
+                case DIFFERENCE -> left;
+            };
+        }
+        throw new UnsupportedSceneException("the live view cannot draw a " + kindName(e) + " yet");
+    }
+
+    private Aabb sphere(Sphere s, Transform t) {
+        if (!(s.radius() > 0)) {
+            leafHeader(GpuScene.EMPTY);
+            zeros(5);
+            material(s.material());
+            return Aabb.EMPTY;
+        }
+        double r = s.radius();
+        Transform unit = Transform.scaling(new Vec3(r, r, r)).then(Transform.translation(s.center())).then(t);
+        leafHeader(GpuScene.SPHERE);
+        matrix(unit.inverseMatrix());
+        zeros(2);
+        material(s.material());
+        // The ellipsoid M·(unit ball) + t reaches |row i of M| along world axis i.
+        double[] m = unit.matrix();
+        double[] lo = new double[3], hi = new double[3];
+        for (int i = 0; i < 3; i++) {
+            double e = Math.sqrt(m[4 * i] * m[4 * i] + m[4 * i + 1] * m[4 * i + 1] + m[4 * i + 2] * m[4 * i + 2]);
+            lo[i] = m[4 * i + 3] - e;
+            hi[i] = m[4 * i + 3] + e;
+        }
+        return new Aabb(new Vec3(lo[0], lo[1], lo[2]), new Vec3(hi[0], hi[1], hi[2]));
+    }
+
+    private Aabb box(Box b, Transform t) {
+        leafHeader(GpuScene.BOX);
+        matrix(t.inverseMatrix());
+        texel(b.min().x(), b.min().y(), b.min().z(), 0);
+        texel(b.max().x(), b.max().y(), b.max().z(), 0);
+        material(b.material());
+        return new Aabb(b.min(), b.max()).transformed(t);
+    }
+
+    private Aabb plane(Plane p, Transform t) {
+        Vec3 n = t.applyToNormal(p.normal()).normalize();
+        Vec3 q = t.applyToPoint(p.position());
+        leafHeader(GpuScene.PLANE);
+        texel(n.x(), n.y(), n.z(), n.dot(q));
+        zeros(4);
+        material(p.material());
+        return Aabb.INFINITE;
+    }
+
+    private void leafHeader(int kind) {
+        texel(kind, 0, 0, 0);
+    }
+
+    private void matrix(double[] m) {
+        for (int row = 0; row < 3; row++) texel(m[4 * row], m[4 * row + 1], m[4 * row + 2], m[4 * row + 3]);
+    }
+
+    private void material(Material m) {
+        texel(m.color().r(), m.color().g(), m.color().b(), m.diffuse());
+        texel(m.specular(), m.shininess(), m.transparency(), m.reflectivity());
+        texel(m.emission().r(), m.emission().g(), m.emission().b(), 0);
+    }
+
+    private void zeros(int texels) {
+        for (int i = 0; i < texels; i++) texel(0, 0, 0, 0);
+    }
+
+    private void texel(double a, double b, double c, double d) {
+        reserve(4);
+        data[size++] = (float) a;
+        data[size++] = (float) b;
+        data[size++] = (float) c;
+        data[size++] = (float) d;
+    }
+
+    private void reserve(int floats) {
+        if (size + floats > data.length) data = Arrays.copyOf(data, Math.max(2 * data.length, size + floats));
+    }
+
+    private static double maxAbs(Vec3 v) {
+        return Math.max(Math.abs(v.x()), Math.max(Math.abs(v.y()), Math.abs(v.z())));
+    }
+
+    private static String kindName(Object o) {
+        return o.getClass().getSimpleName();
+    }
+}

@@ -1,0 +1,30 @@
+// The geometry pass: the fragments of one entity's proxy ray-cast it and keep the nearest hit per
+// pixel (entity id, distance, the primitive's texel address); shading happens once per pixel after.
+flat in int entity;
+layout(location = 0) out int id;
+layout(location = 1) out float depth;
+layout(location = 2) out int leafAddress;
+uniform float depthScale;
+
+void main() {
+    vec3 ro, rd;
+    primaryRay(ro, rd);
+    float t;
+    int leaf;
+#ifdef PRIMITIVES
+    // Entities that are one primitive: no CSG walk at all (llvmpipe runs both sides of branches).
+    float a, b;
+    // One primitive: the program is one step, so the primitive follows the header at once.
+    if (!leafSpan(entity + 4, ro, rd, a, b)) discard;
+    t = a > 0.0 ? a : b;
+    if (!(t > 0.0) || t == INF) discard;
+    leaf = 0;
+#else
+    if (walk(entity, ro, rd, 0.0, INF, false, t, leaf) == 0.0) discard;
+#endif
+    vec4 header = T(entity);
+    id = int(header.z) + 1;
+    depth = t;
+    leafAddress = entity + 3 + int(header.y) + leaf * LEAF_TEXELS;
+    gl_FragDepth = t / (t + depthScale);
+}

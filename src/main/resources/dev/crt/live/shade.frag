@@ -1,0 +1,104 @@
+// The shading pass, once per pixel: with BACKGROUND defined, the background (and grid) where the
+// geometry pass found nothing; without, the Phong terms of rendering-model.md with shadow rays on
+// the surface it found. The stencil buffer decides which pixels each program runs on.
+layout(location = 0) out vec4 colour;
+uniform isampler2D ids;
+uniform sampler2D depths;
+uniform isampler2D leaves;
+uniform isamplerBuffer directory;
+uniform int entityCount;
+uniform int shadowLights;     // and only for the first this many lights
+uniform int lightCount;
+uniform vec4 lightA[16];      // kind, position or direction towards the light
+uniform vec4 lightB[16];      // colour, ambient
+uniform vec4 lightC[16];      // falloff
+uniform int selected;         // entity index + 1, 0 for none
+uniform int hovered;
+
+float shadow(vec3 x, vec3 w, float dist) {
+    float s = 1.0;
+    for (int e = 0; e < entityCount && s > 0.0; e++) {
+        int o = texelFetch(directory, e).x;
+        if (!boxCrossed(o, x, w, dist)) continue;
+        float tHit;
+        int leafHit;
+        s *= walk(o, x, w, 0.0, dist, true, tHit, leafHit);
+    }
+    return s;
+}
+
+vec3 gridOver(vec3 c, vec3 o) {
+    // Lines of the plane through the origin across the view axis, in scene units.
+    vec2 g = gridAxis == 0 ? o.yz : gridAxis == 1 ? o.xz : o.xy;
+    vec2 w = max(fwidth(g), vec2(1e-20));
+    vec2 line = abs(fract(g / gridSpacing + 0.5) - 0.5) * gridSpacing / w;
+    vec2 major = abs(fract(g / (10.0 * gridSpacing) + 0.5) - 0.5) * 10.0 * gridSpacing / w;
+    vec2 axis = abs(g) / w;
+    c = mix(c, vec3(0.5), 0.35 * (1.0 - clamp(min(line.x, line.y), 0.0, 1.0)));
+    c = mix(c, vec3(0.6), 0.6 * (1.0 - clamp(min(major.x, major.y), 0.0, 1.0)));
+    return mix(c, vec3(0.85), 1.0 - clamp(min(axis.x, axis.y), 0.0, 1.0));
+}
+
+void main() {
+    vec3 ro, rd;
+    primaryRay(ro, rd);
+#ifdef BACKGROUND
+    vec4 c = encode(backgroundColour(rd));
+#ifdef GRID
+    colour = vec4(gridOver(c.rgb, ro), 1.0);
+#else
+    colour = c;
+#endif
+#else
+    ivec2 p = ivec2(gl_FragCoord.xy);
+    int id = texelFetch(ids, p, 0).x;
+    float t = texelFetch(depths, p, 0).x;
+    int L = texelFetch(leaves, p, 0).x;
+    vec3 x = ro + t * rd;
+    vec3 ng = normalAt(L, x);
+    vec3 n = dot(rd, ng) < 0.0 ? ng : -ng;
+    vec4 m0 = T(L + 6), m1 = T(L + 7), m2 = T(L + 8);
+    vec3 base = m0.rgb;
+    float kd = m0.a, ks = m1.x, shininess = m1.y, kt = m1.z, kr = m1.w;
+    vec3 v = -rd;
+    vec3 c = m2.rgb;
+    // Shadow rays start a little off the surface, relative to the scale of the coordinates.
+    float offset = 1e-4 * (t + length(x) + 1e-3);
+    for (int l = 0; l < lightCount; l++) {
+        vec3 cl = lightB[l].rgb;
+        c += lightB[l].a * cl * base;
+        vec3 w;
+        float dist, att = 1.0;
+        if (int(lightA[l].x) == 0) {
+            vec3 toLight = lightA[l].yzw - x;
+            dist = length(toLight);
+            w = toLight / dist;
+            if (lightC[l].x > 0.0) att = lightC[l].x / (dist * dist);
+        } else {
+            w = lightA[l].yzw;
+            dist = INF;
+        }
+        float nw = dot(n, w);
+        vec3 r = 2.0 * nw * n - w;
+        float rv = dot(r, v);
+        float diffuse = kd * max(0.0, nw);
+        float specular = ks > 0.0 && rv > 0.0 ? ks * pow(rv, shininess) : 0.0;
+        // As the ray tracer: a light that adds nothing here casts no shadow ray.
+        if (diffuse == 0.0 && specular == 0.0) continue;
+#ifdef SHADOWS
+        float s = l < shadowLights ? shadow(x + n * offset, w, dist) : 1.0;
+#else
+        float s = 1.0;
+#endif
+        c += s * att * (diffuse * cl * base + specular * cl);
+    }
+    // Mirror and glass show what they see of the background only: the live view traces no
+    // secondary rays against the scene.
+    vec3 reflected = rd - 2.0 * dot(rd, n) * n;
+    c = (1.0 - kt) * c + kr * backgroundColour(reflected) + kt * backgroundColour(rd);
+    vec4 outColour = encode(c);
+    if (id == selected) outColour.rgb = mix(outColour.rgb, vec3(1.0, 0.6, 0.1), 0.35);
+    else if (id == hovered) outColour.rgb = mix(outColour.rgb, vec3(0.3, 0.7, 1.0), 0.25);
+    colour = outColour;
+#endif
+}

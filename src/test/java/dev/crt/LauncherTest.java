@@ -1,0 +1,61 @@
+package dev.crt;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.concurrent.TimeUnit;
+import java.util.stream.Stream;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/**
+ * The ./crt launcher on a fresh clone: two runs started together build the jar once (the second
+ * waits on the first's lock, then runs) and compile no test or benchmark code. One build of the
+ * main code with Maven: about 25 s on the shared 2-core machine.
+ */
+class LauncherTest {
+    @TempDir
+    Path clone;
+
+    private static void copy(Path from, Path to) throws IOException {
+        try (Stream<Path> files = Files.walk(from)) {
+            for (Path f : (Iterable<Path>) files::iterator) {
+                Path target = to.resolve(from.relativize(f).toString());
+                if (Files.isDirectory(f)) Files.createDirectories(target);
+                else Files.copy(f, target);
+            }
+        }
+    }
+
+    @Test
+    void twoFirstRunsAtOnceBuildOnceAndBothRun() throws Exception {
+        Path repo = Path.of("").toAbsolutePath();
+        for (String part : List.of("pom.xml", "crt", "grammar", "src/main")) copy(repo.resolve(part), clone.resolve(part));
+        clone.resolve("crt").toFile().setExecutable(true);
+        Path script = Files.writeString(clone.resolve("a.crt"), "Scene { Sphere { } }\n");
+        Process first = start(script, "1");
+        Thread.sleep(500);
+        Process second = start(script, "2");
+        assertThat(first.waitFor(240, TimeUnit.SECONDS)).isTrue();
+        assertThat(second.waitFor(240, TimeUnit.SECONDS)).isTrue();
+        String err = Files.readString(clone.resolve("err1")) + Files.readString(clone.resolve("err2"));
+        assertThat(first.exitValue()).as(err).isZero();
+        assertThat(second.exitValue()).as(err).isZero();
+        assertThat(err.split("crt: building target/crt.jar", -1)).as(err).hasSize(2);
+        assertThat(Files.readString(clone.resolve("out1"))).contains("a.crt: ok");
+        assertThat(Files.readString(clone.resolve("out2"))).contains("a.crt: ok");
+        assertThat(clone.resolve("target/crt.jar")).isRegularFile();
+        assertThat(clone.resolve("target/test-classes")).doesNotExist();
+    }
+
+    private Process start(Path script, String n) throws IOException {
+        return new ProcessBuilder("bash", clone.resolve("crt").toString(), "check", script.toString())
+                .directory(clone.toFile())
+                .redirectOutput(clone.resolve("out" + n).toFile())
+                .redirectError(clone.resolve("err" + n).toFile())
+                .start();
+    }
+}

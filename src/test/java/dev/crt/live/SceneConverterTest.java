@@ -1,0 +1,151 @@
+package dev.crt.live;
+
+import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.assertThatThrownBy;
+import static org.assertj.core.api.Assertions.fail;
+
+import dev.crt.geom.Aabb;
+import dev.crt.geom.Transform;
+import dev.crt.geom.Vec3;
+import dev.crt.scene.Background;
+import dev.crt.scene.Box;
+import dev.crt.scene.Csg;
+import dev.crt.scene.CsgOperation;
+import dev.crt.scene.Entity;
+import dev.crt.scene.GradientBackground;
+import dev.crt.scene.Light;
+import dev.crt.scene.Material;
+import dev.crt.scene.PanoramaBackground;
+import dev.crt.scene.ParallelLight;
+import dev.crt.scene.Picture;
+import dev.crt.scene.Plane;
+import dev.crt.scene.PointLight;
+import dev.crt.scene.Rgb;
+import dev.crt.scene.Scene;
+import dev.crt.scene.Settings;
+import dev.crt.scene.SolidBackground;
+import dev.crt.scene.SourceSpan;
+import dev.crt.scene.Sphere;
+import java.util.ArrayList;
+import java.util.LinkedHashSet;
+import java.util.List;
+import java.util.Map;
+import java.util.Set;
+import org.junit.jupiter.api.Test;
+
+class SceneConverterTest {
+    static final Material M = Material.DEFAULT;
+    static final Sphere SPHERE = new Sphere(new Vec3(1, 2, 3), 2, M, Transform.IDENTITY, SourceSpan.NONE);
+    static final Box BOX = new Box(new Vec3(-1, -1, -1), new Vec3(1, 1, 1), M, Transform.IDENTITY, SourceSpan.NONE);
+    static final Plane PLANE = new Plane(new Vec3(0, 1, 0), new Vec3(0, -1, 0), M, Transform.IDENTITY, SourceSpan.NONE);
+
+    /** One sample of every concrete kind the scene model has; a new kind must be added here and to the converter. */
+    static final Map<Class<?>, Object> SAMPLES = Map.of(
+            Sphere.class, SPHERE,
+            Box.class, BOX,
+            Plane.class, PLANE,
+            Csg.class, new Csg(CsgOperation.DIFFERENCE, BOX, SPHERE, Transform.IDENTITY, SourceSpan.NONE),
+            PointLight.class, new PointLight(new Vec3(0, 5, 0), Rgb.WHITE, 10, 0.1, SourceSpan.NONE),
+            ParallelLight.class, new ParallelLight(new Vec3(1, 1, 1), Vec3.ZERO, Rgb.WHITE, 0, SourceSpan.NONE),
+            SolidBackground.class, new SolidBackground(Rgb.GREY),
+            GradientBackground.class, new GradientBackground(Rgb.WHITE, Rgb.BLACK),
+            PanoramaBackground.class, new PanoramaBackground("p.png", new Picture(1, 1, new float[3]), 0));
+
+    static Set<Class<?>> concreteKinds(Class<?> sealed) {
+        Set<Class<?>> out = new LinkedHashSet<>();
+        if (!sealed.isSealed()) {
+            out.add(sealed);
+            return out;
+        }
+        for (Class<?> c : sealed.getPermittedSubclasses()) out.addAll(concreteKinds(c));
+        return out;
+    }
+
+    static Scene scene(List<Entity> entities, List<Light> lights, Background background) {
+        Settings s = Settings.DEFAULT;
+        s = new Settings("", "", "", "", lights, s.camera(), background, 1, 1, 5, 1, 64, 48);
+        return new Scene("test", s, entities);
+    }
+
+    @Test
+    void everyKindOfTheSceneModelConverts() {
+        List<Class<?>> kinds = new ArrayList<>();
+        kinds.addAll(concreteKinds(Entity.class));
+        kinds.addAll(concreteKinds(Light.class));
+        kinds.addAll(concreteKinds(Background.class));
+        assertThat(kinds).hasSizeGreaterThanOrEqualTo(9);
+        for (Class<?> kind : kinds) {
+            Object sample = SAMPLES.get(kind);
+            if (sample == null) {
+                fail("the scene model has a kind the live view was not taught: " + kind.getName()
+                        + "; add it to SceneConverter (and LiveRenderer's shader) and a sample here");
+            }
+            Scene s = sample instanceof Entity e ? scene(List.of(e), List.of(), Background.BLACK)
+                    : sample instanceof Light l ? scene(List.of(SPHERE), List.of(l), Background.BLACK)
+                    : scene(List.of(SPHERE), List.of(), (Background) sample);
+            GpuScene g = SceneConverter.convert(s);
+            assertThat(g.entityCount()).as(kind.getSimpleName()).isEqualTo(1);
+        }
+    }
+
+    @Test
+    void aCsgTreeBecomesAPostfixProgramWithItsPrimitivesInOrder() {
+        Csg tree = new Csg(CsgOperation.INTERSECTION,
+                new Csg(CsgOperation.DIFFERENCE, BOX, SPHERE, Transform.IDENTITY, SourceSpan.NONE), PLANE,
+                Transform.translation(new Vec3(5, 0, 0)), SourceSpan.NONE);
+        GpuScene g = SceneConverter.convert(scene(List.of(SPHERE, tree), List.of(), Background.BLACK));
+        float[] d = g.texelData();
+        int o = 4 * g.entityOffset[1];
+        assertThat(d[o]).as("leaves").isEqualTo(3);
+        assertThat(d[o + 1]).as("program steps").isEqualTo(5);
+        assertThat(d[o + 2]).as("entity index").isEqualTo(1);
+        int p = o + 4 * GpuScene.HEADER_TEXELS;
+        int[][] expected = {{GpuScene.OP_LEAF, 0}, {GpuScene.OP_LEAF, 1}, {GpuScene.OP_DIFFERENCE, 0},
+            {GpuScene.OP_LEAF, 2}, {GpuScene.OP_INTERSECTION, 0}};
+        for (int s = 0; s < 5; s++) {
+            assertThat(new float[] {d[p + 4 * s], d[p + 4 * s + 1]}).as("step %d", s)
+                    .containsExactly(expected[s][0], expected[s][1]);
+        }
+        int leaves = p + 4 * 5;
+        assertThat(d[leaves]).isEqualTo(GpuScene.BOX);
+        // The box sits 5 to the right: its world-to-local matrix moves x back by 5.
+        assertThat(d[leaves + 4 + 3]).isEqualTo(-5f);
+        assertThat(d[leaves + 4 * GpuScene.LEAF_TEXELS]).isEqualTo(GpuScene.SPHERE);
+        assertThat(d[leaves + 8 * GpuScene.LEAF_TEXELS]).isEqualTo(GpuScene.PLANE);
+        // The box minus a sphere, cut by a half-space: bounded by the box, moved.
+        assertThat(g.entityBounds(1)).isEqualTo(new Aabb(new Vec3(4, -1, -1), new Vec3(6, 1, 1)));
+        assertThat(g.boundedOffsets).hasSize(2);
+        assertThat(g.unboundedOffsets).isEmpty();
+    }
+
+    @Test
+    void aUnitSphereFrameMapsTheSurfaceToRadiusOne() {
+        GpuScene g = SceneConverter.convert(scene(List.of(SPHERE), List.of(), Background.BLACK));
+        float[] d = g.texelData();
+        int leaf = 4 * (GpuScene.HEADER_TEXELS + 1);
+        // World point (3, 2, 3) is on the sphere about (1, 2, 3) of radius 2: local (1, 0, 0).
+        double x = d[leaf + 4] * 3 + d[leaf + 5] * 2 + d[leaf + 6] * 3 + d[leaf + 7];
+        assertThat(x).isCloseTo(1, org.assertj.core.data.Offset.offset(1e-6));
+        assertThat(g.entityBounds(0)).isEqualTo(new Aabb(new Vec3(-1, 0, 1), new Vec3(3, 4, 5)));
+    }
+
+    @Test
+    void planesAndWhatTheyReachAreUnbounded() {
+        Csg cut = new Csg(CsgOperation.DIFFERENCE, PLANE, SPHERE, Transform.IDENTITY, SourceSpan.NONE);
+        GpuScene g = SceneConverter.convert(scene(List.of(PLANE, cut, BOX), List.of(), Background.BLACK));
+        assertThat(g.unboundedOffsets).hasSize(2);
+        assertThat(g.boundedOffsets).hasSize(1);
+        assertThat(g.bounds()).isEqualTo(new Aabb(new Vec3(-1, -1, -1), new Vec3(1, 1, 1)));
+    }
+
+    @Test
+    void tooLargeACsgTreeIsRefusedWithItsPlace() {
+        Entity e = SPHERE;
+        for (int i = 0; i < GpuScene.MAX_LEAVES; i++) {
+            e = new Csg(CsgOperation.UNION, e, SPHERE, Transform.IDENTITY, new SourceSpan("big.crt", 7, 3, 0, 1));
+        }
+        Scene s = scene(List.of(e), List.of(), Background.BLACK);
+        assertThatThrownBy(() -> SceneConverter.convert(s)).isInstanceOf(UnsupportedSceneException.class)
+                .hasMessage("the live view draws CSG of at most 32 primitives; the entity at big.crt:7:3 has 33");
+    }
+}
