@@ -9,12 +9,16 @@ import dev.crt.geom.Transform;
 import dev.crt.geom.Vec3;
 import dev.crt.scene.Background;
 import dev.crt.scene.Box;
+import dev.crt.scene.Cone;
 import dev.crt.scene.Csg;
+import dev.crt.scene.Cylinder;
 import dev.crt.scene.CsgOperation;
 import dev.crt.scene.Entity;
 import dev.crt.scene.GradientBackground;
 import dev.crt.scene.Light;
 import dev.crt.scene.Material;
+import dev.crt.scene.Mesh;
+import dev.crt.scene.MeshData;
 import dev.crt.scene.PanoramaBackground;
 import dev.crt.scene.ParallelLight;
 import dev.crt.scene.Picture;
@@ -26,6 +30,7 @@ import dev.crt.scene.Settings;
 import dev.crt.scene.SolidBackground;
 import dev.crt.scene.SourceSpan;
 import dev.crt.scene.Sphere;
+import dev.crt.scene.Torus;
 import java.util.ArrayList;
 import java.util.LinkedHashSet;
 import java.util.List;
@@ -51,6 +56,17 @@ class SceneConverterTest {
             GradientBackground.class, new GradientBackground(Rgb.WHITE, Rgb.BLACK),
             PanoramaBackground.class, new PanoramaBackground("p.png", new Picture(1, 1, new float[3]), 0));
 
+    /**
+     * The shapes of issue 12 that the live view's shader does not draw yet: the converter must
+     * refuse them with a message (the view then says so), never draw them wrongly or crash.
+     */
+    static final Map<Class<?>, Entity> NOT_YET_DRAWN = Map.of(
+            Cylinder.class, new Cylinder(Vec3.ZERO, new Vec3(0, 1, 0), 0.5, true, M, Transform.IDENTITY, SourceSpan.NONE),
+            Cone.class, new Cone(Vec3.ZERO, new Vec3(0, 1, 0), 0.5, 0, true, M, Transform.IDENTITY, SourceSpan.NONE),
+            Torus.class, new Torus(Vec3.ZERO, new Vec3(0, 1, 0), 1, 0.25, M, Transform.IDENTITY, SourceSpan.NONE),
+            Mesh.class, new Mesh(new MeshData("triangle", new double[] {0, 0, 0, 1, 0, 0, 0, 1, 0}, new int[] {0, 1, 2},
+                    null, null, false), true, M, Transform.IDENTITY, SourceSpan.NONE));
+
     static Set<Class<?>> concreteKinds(Class<?> sealed) {
         Set<Class<?>> out = new LinkedHashSet<>();
         if (!sealed.isSealed()) {
@@ -75,6 +91,12 @@ class SceneConverterTest {
         kinds.addAll(concreteKinds(Background.class));
         assertThat(kinds).hasSizeGreaterThanOrEqualTo(9);
         for (Class<?> kind : kinds) {
+            if (NOT_YET_DRAWN.containsKey(kind)) {
+                Scene s = scene(List.of(NOT_YET_DRAWN.get(kind)), List.of(), Background.BLACK);
+                assertThatThrownBy(() -> SceneConverter.convert(s)).isInstanceOf(UnsupportedSceneException.class)
+                        .hasMessageContaining("cannot draw a");
+                continue;
+            }
             Object sample = SAMPLES.get(kind);
             if (sample == null) {
                 fail("the scene model has a kind the live view was not taught: " + kind.getName()
