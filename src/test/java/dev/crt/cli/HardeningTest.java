@@ -43,7 +43,7 @@ class HardeningTest {
                 "crt animate", "--resume, --force are mutually exclusive (specify only one)");
         usageError(CliRun.of("check", "--assets", dir.resolve("none").toString(), s), "crt check",
                 "--assets " + dir.resolve("none") + ": no such folder");
-        usageError(CliRun.of(), "crt", "a command is needed: check, render or animate");
+        usageError(CliRun.of(), "crt", "a command is needed: check, render, animate, accuracy or preview");
         usageError(CliRun.of("rendr", s), "crt", "unknown command 'rendr' (the commands are check, render, animate and help)");
     }
 
