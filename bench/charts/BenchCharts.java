@@ -22,7 +22,8 @@ import org.knowm.xchart.style.markers.SeriesMarkers;
  * <pre>
  *   java -cp XCHART_CLASSPATH bench/charts/BenchCharts.java RESULTS_DIR IMAGES_DIR
  * </pre>
- * Writes bench-povray.png, bench-scaling.png, bench-mrays.png and bench-csg.png into IMAGES_DIR.
+ * Writes bench-povray.png, bench-scaling.png, bench-mrays.png, bench-csg.png and bench-torus-roots.png
+ * into IMAGES_DIR.
  */
 public final class BenchCharts {
     private static final Color CRT = new Color(0x2b, 0x6c, 0xb0);
@@ -51,6 +52,12 @@ public final class BenchCharts {
         } else {
             System.err.println("no " + scaling + ": run bench/scaling.sh first");
         }
+        Path torus = results.resolve("torus-roots.csv");
+        if (Files.exists(torus)) {
+            torus(read(torus), images.resolve("bench-torus-roots.png"));
+        } else {
+            System.err.println("no " + torus + ": run TorusRootsBench (docs/benchmarks.md, torus roots)");
+        }
         Path csg = results.resolve("csg-scaling.csv");
         Path before = results.resolve("csg-scaling-before.csv");
         if (Files.exists(csg) && Files.exists(before)) {
@@ -72,6 +79,37 @@ public final class BenchCharts {
         chart.getStyler().setXAxisDecimalPattern("#,###");
         series(chart, "every operand tested (before)", column(before, 0), column(before, 3), POVRAY);
         series(chart, "n-ary nodes and a BVH over the operands", column(rows, 0), column(rows, 3), CRT);
+        save(chart, file);
+    }
+
+    /**
+     * Failure rate against cost per ray of each quartic method, one point per family of rays.
+     * A rate of 0 cannot sit on a log axis: it is drawn at half of one failure in the rays tried.
+     */
+    private static void torus(List<String[]> rows, Path file) throws IOException {
+        XYChart chart = new XYChartBuilder().width(800).height(450)
+                .title("Torus roots: failure rate against cost (one point per family of rays)")
+                .xAxisTitle("nanoseconds per ray").yAxisTitle("rays with a missed or wrong root (log; 0 drawn at 1/(2n))").build();
+        chart.getStyler().setYAxisLogarithmic(true);
+        chart.getStyler().setDefaultSeriesRenderStyle(XYSeries.XYSeriesRenderStyle.Scatter);
+        chart.getStyler().setLegendPosition(Styler.LegendPosition.InsideNE);
+        chart.getStyler().setChartBackgroundColor(Color.WHITE);
+        chart.getStyler().setMarkerSize(10);
+        Color[] colors = {POVRAY, CRT, GREY};
+        List<String> methods = new ArrayList<>();
+        for (String[] r : rows) if (!methods.contains(r[0])) methods.add(r[0]);
+        for (int m = 0; m < methods.size(); m++) {
+            List<Double> x = new ArrayList<>(), y = new ArrayList<>();
+            for (String[] r : rows) {
+                if (!r[0].equals(methods.get(m))) continue;
+                double rays = Double.parseDouble(r[2]), failed = Double.parseDouble(r[3]);
+                x.add(Double.parseDouble(r[7]));
+                y.add(failed > 0 ? failed / rays : 0.5 / rays);
+            }
+            XYSeries series = chart.addSeries(methods.get(m), x, y);
+            series.setMarker(SeriesMarkers.CIRCLE);
+            series.setMarkerColor(colors[m % colors.length]);
+        }
         save(chart, file);
     }
 

@@ -166,8 +166,12 @@ public final class Quartic {
             else b = x;
             double d = 12 * x * x + 2 * c2;
             double next = x - f / d;
+            // Newton closes on a root from one side, so the bracket alone shrinks slowly: a
+            // step of an ulp or two is convergence, whether or not it lands inside the bracket
+            // (x itself is then one of its ends).
+            if (Math.abs(next - x) <= 2 * Math.ulp(x)) return x;
             if (!(next > a && next < b) || Math.abs(next - x) > 0.5 * (b - a)) next = 0.5 * (a + b);
-            if (next == x || b - a <= 2 * Math.ulp(Math.max(Math.abs(a), Math.abs(b)))) return next;
+            if (b - a <= 2 * Math.ulp(Math.max(Math.abs(a), Math.abs(b)))) return next;
             x = next;
         }
         return x;
@@ -183,8 +187,12 @@ public final class Quartic {
             else b = x;
             double d = cubic(c2, c1, x);
             double next = x - f / d;
+            // Newton closes on a root from one side, so the bracket alone shrinks slowly: a
+            // step of an ulp or two is convergence, whether or not it lands inside the bracket
+            // (x itself is then one of its ends).
+            if (Math.abs(next - x) <= 2 * Math.ulp(x)) return x;
             if (!(next > a && next < b) || Math.abs(next - x) > 0.5 * (b - a)) next = 0.5 * (a + b);
-            if (next == x || b - a <= 2 * Math.ulp(Math.max(Math.abs(a), Math.abs(b)))) return next;
+            if (b - a <= 2 * Math.ulp(Math.max(Math.abs(a), Math.abs(b)))) return next;
             x = next;
         }
         return x;

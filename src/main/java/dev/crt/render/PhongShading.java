@@ -21,10 +21,11 @@ final class PhongShading {
 
     /**
      * The local colour of material m, of surface colour C = (cr, cg, cb), at p with ray-facing
-     * normal n and view direction v, into {@code colour}.
+     * shading normal n and view direction v, into {@code colour}; shadow rays leave p along the
+     * ray-facing geometric normal g (the same as n except on smooth meshes).
      */
-    void shade(int m, double cr, double cg, double cb, double px, double py, double pz, double nx, double ny, double nz,
-            double vx, double vy, double vz, double delta, double[] colour) {
+    void shade(int m, double cr, double cg, double cb, double px, double py, double pz, double gx, double gy, double gz,
+            double nx, double ny, double nz, double vx, double vy, double vz, double delta, double[] colour) {
         double[] mat = materials;
         double kd = mat[m + Materials.DIFFUSE], ks = mat[m + Materials.SPECULAR];
         double shininess = mat[m + Materials.SHININESS];
@@ -71,8 +72,8 @@ final class PhongShading {
                 if (diffuse == 0 && specular == 0) continue;
                 double side = nw > 0 ? delta : -delta;
                 double s = kind == Lights.POINT
-                        ? t.shadowTo(px + side * nx, py + side * ny, pz + side * nz, l.x[i], l.y[i], l.z[i], side, i)
-                        : t.shadow(ls, px, py, pz, nx, ny, nz, side, i);
+                        ? t.shadowTo(px + side * gx, py + side * gy, pz + side * gz, l.x[i], l.y[i], l.z[i], side, i)
+                        : t.shadow(ls, px, py, pz, gx, gy, gz, side, i);
                 if (s == 0) continue;
                 double att = falloff > 0 ? falloff / d2 : 1;
                 double f = s * att * weight;

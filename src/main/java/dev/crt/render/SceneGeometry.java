@@ -37,7 +37,7 @@ final class SceneGeometry {
     SceneGeometry(List<Entity> entities) {
         // First pass, in the scene's order: every primitive flattened with its material (kept, to
         // be copied in the second pass), and the bounds of every entity, to build the hierarchy.
-        Shapes firstShapes = new Shapes();
+        Shapes firstShapes = new Shapes().sharingMeshesWith(shapes);
         CsgSolids probeCsg = new CsgSolids();
         Materials probeMaterials = new Materials();
         List<Entity> bounded = new ArrayList<>();

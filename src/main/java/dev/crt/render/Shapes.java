@@ -6,11 +6,15 @@ import dev.crt.geom.Vec3;
 import dev.crt.scene.Box;
 import dev.crt.scene.Cone;
 import dev.crt.scene.Cylinder;
+import dev.crt.scene.Mesh;
+import dev.crt.scene.MeshData;
 import dev.crt.scene.Plane;
 import dev.crt.scene.Primitive;
 import dev.crt.scene.Sphere;
 import dev.crt.scene.Torus;
 import java.util.Arrays;
+import java.util.IdentityHashMap;
+import java.util.Map;
 
 /**
  * The primitives of a prepared scene as flat arrays, and the one dispatch point from a shape's
@@ -34,8 +38,9 @@ final class Shapes {
     /** Cylinders, cones and frusta, capped or open. */
     static final int CONE = 6;
     static final int TORUS = 7;
+    static final int MESH = 8;
     /** The number of kind tags: tags are 0 … KINDS − 1. */
-    static final int KINDS = 8;
+    static final int KINDS = 9;
 
     private int count;
     int[] kind = new int[16];
@@ -50,6 +55,9 @@ final class Shapes {
      * textures are evaluated in the entity's own coordinates, before its modifiers.
      */
     double[] toEntity = new double[16 * 12];
+    /** The meshes the MESH shapes use, each prepared once however many instances share it. */
+    MeshGeometry[] meshes = new MeshGeometry[0];
+    private Map<MeshData, MeshGeometry> prepared = new IdentityHashMap<>();
 
     int count() { return count; }
 
@@ -65,6 +73,7 @@ final class Shapes {
         else if (p instanceof Cylinder c) ConeShape.add(this, s, c, toWorld);
         else if (p instanceof Cone c) ConeShape.add(this, s, c, toWorld);
         else if (p instanceof Torus t) TorusShape.add(this, s, t, toWorld);
+        else if (p instanceof Mesh m) MeshShape.add(this, s, m, toWorld);
         else throw new IllegalArgumentException("no shape class for " + p.getClass().getSimpleName());
         return s;
     }
@@ -81,6 +90,11 @@ final class Shapes {
         int length = end - start;
         if (dataSize + length > data.length) data = Arrays.copyOf(data, Math.max(data.length * 2, dataSize + length));
         System.arraycopy(from.data, start, data, dataSize, length);
+        if (kind[t] == MESH) {
+            // The mesh index is the source's: the geometry itself is shared, not prepared again.
+            int at = dataSize + Affine.SIZE;
+            data[at] = meshIndex(from.meshes[(int) from.data[start + Affine.SIZE]]);
+        }
         dataSize += length;
         return t;
     }
@@ -96,6 +110,25 @@ final class Shapes {
             toEntity = Arrays.copyOf(toEntity, n * 12);
         }
         return s;
+    }
+
+    /** Makes this store prepare meshes into {@code other}'s table, so that both share them; returns this. */
+    Shapes sharingMeshesWith(Shapes other) {
+        prepared = other.prepared;
+        return this;
+    }
+
+    /** The prepared geometry of {@code data}, made on first use. */
+    MeshGeometry mesh(MeshData data) {
+        return prepared.computeIfAbsent(data, MeshGeometry::new);
+    }
+
+    /** The index of {@code g} in {@link #meshes}, adding it when it is new here. */
+    int meshIndex(MeshGeometry g) {
+        for (int i = 0; i < meshes.length; i++) if (meshes[i] == g) return i;
+        meshes = Arrays.copyOf(meshes, meshes.length + 1);
+        meshes[meshes.length - 1] = g;
+        return meshes.length - 1;
     }
 
     /** Both matrices of {@code t} as an {@link Affine} placement. */
@@ -137,6 +170,7 @@ final class Shapes {
             case MAPPED_BOX -> BoxShape.mappedBounds(a, o);
             case CONE -> ConeShape.bounds(a, o);
             case TORUS -> TorusShape.bounds(a, o);
+            case MESH -> MeshShape.bounds(a, o, meshes[(int) a[o + Affine.SIZE]]);
             case EMPTY -> Aabb.EMPTY;
             default -> throw unknown(s);
         };
@@ -165,6 +199,8 @@ final class Shapes {
                 return ConeShape.span(a, o, ray, out);
             case TORUS:
                 return TorusShape.span(a, o, ray, out, out.roots);
+            case MESH:
+                return MeshShape.span(a, o, ray, out, meshes[(int) a[o + Affine.SIZE]]);
             case EMPTY:
                 return false;
             default:
@@ -181,6 +217,7 @@ final class Shapes {
         int o = offset[s];
         double[] a = data;
         double px = ray.ox + t * ray.dx, py = ray.oy + t * ray.dy, pz = ray.oz + t * ray.dz;
+        out.shaded = false;
         switch (kind[s]) {
             case SPHERE -> SphereShape.surface(a, o, px, py, pz, out);
             case BOX -> BoxShape.surface(a, o, face, px, py, pz, out);
@@ -189,6 +226,7 @@ final class Shapes {
             case MAPPED_BOX -> BoxShape.mappedSurface(a, o, face, px, py, pz, out);
             case CONE -> ConeShape.surface(a, o, face, px, py, pz, out);
             case TORUS -> TorusShape.surface(a, o, px, py, pz, out);
+            case MESH -> MeshShape.surface(a, o, face, px, py, pz, out, meshes[(int) a[o + Affine.SIZE]]);
             default -> throw unknown(s);
         }
     }
@@ -209,6 +247,7 @@ final class Shapes {
             case MAPPED_BOX -> BoxShape.mappedFrame(a, o, face, out);
             case CONE -> ConeShape.frame(a, o, face, out);
             case TORUS -> TorusShape.frame(a, o, out);
+            case MESH -> MeshShape.frame(a, o, face, out, meshes[(int) a[o + Affine.SIZE]]);
             default -> throw unknown(s);
         }
     }

@@ -8,6 +8,13 @@ package dev.crt.render;
 final class SurfacePoint {
     double px, py, pz;
     double nx, ny, nz;
+    /**
+     * Whether (snx, sny, snz) is a shading normal apart from the geometric one (smooth meshes);
+     * then (lx, ly, lz) is the point lights are looked at from, lifted onto the smooth surface.
+     */
+    boolean shaded;
+    double snx, sny, snz;
+    double lx, ly, lz;
     double u, v;
     double dpdux, dpduy, dpduz;
     double dpdvx, dpdvy, dpdvz;

@@ -103,6 +103,15 @@ final class Tracer {
         double dn = dx * gx + dy * gy + dz * gz;
         boolean entering = dn < 0;
         double nx = entering ? gx : -gx, ny = entering ? gy : -gy, nz = entering ? gz : -gz;
+        // The shading normal (interpolated on smooth meshes, else the geometric one), turned to
+        // the ray's side; the geometric normal keeps deciding entering and the offsets.
+        double snx = nx, sny = ny, snz = nz;
+        if (surface.shaded) {
+            double sign = surface.snx * nx + surface.sny * ny + surface.snz * nz < 0 ? -1 : 1;
+            snx = sign * surface.snx;
+            sny = sign * surface.sny;
+            snz = sign * surface.snz;
+        }
         double delta = OFFSET * Math.max(Math.max(Math.abs(px), Math.abs(py)), Math.max(Math.abs(pz), shapes.scale[s]));
         int m = shapes.material[s] * Materials.STRIDE;
         double[] mat = materials;
@@ -133,17 +142,25 @@ final class Tracer {
                 cg = mat[c + 1];
                 cb = mat[c + 2];
             }
-            phong.shade(m, cr, cg, cb, px, py, pz, nx, ny, nz, -dx, -dy, -dz, delta, colour);
+            // On smooth meshes the lights are looked at from the shading point and along the shading
+            // normal; shadow rays still leave along the geometric normal.
+            if (surface.shaded) {
+                phong.shade(m, cr, cg, cb, surface.lx, surface.ly, surface.lz, nx, ny, nz, snx, sny, snz, -dx, -dy, -dz, delta,
+                        colour);
+            } else {
+                phong.shade(m, cr, cg, cb, px, py, pz, nx, ny, nz, nx, ny, nz, -dx, -dy, -dz, delta, colour);
+            }
             accR += wr * local * colour[0];
             accG += wg * local * colour[1];
             accB += wb * local * colour[2];
         }
         if (depth == 0) return;
-        double dDotN = dx * nx + dy * ny + dz * nz;
-        double rdx = dx - 2 * dDotN * nx, rdy = dy - 2 * dDotN * ny, rdz = dz - 2 * dDotN * nz;
+        // Mirror and refraction directions follow the shading normal; the offsets, the geometric one.
+        double dDotN = dx * snx + dy * sny + dz * snz;
+        double rdx = dx - 2 * dDotN * snx, rdy = dy - 2 * dDotN * sny, rdz = dz - 2 * dDotN * snz;
         if (kt > 0 && mat[m + Materials.FRESNEL] != 0) {
-            fresnel(px, py, pz, dx, dy, dz, nx, ny, nz, rdx, rdy, rdz, entering, delta, depth, kr, kt, mat[m + Materials.IOR],
-                    wr, wg, wb);
+            fresnel(px, py, pz, dx, dy, dz, nx, ny, nz, snx, sny, snz, rdx, rdy, rdz, entering, delta, depth, kr, kt,
+                    mat[m + Materials.IOR], wr, wg, wb);
             return;
         }
         if (kr > 0) {
@@ -160,7 +177,7 @@ final class Tracer {
             } else {
                 double c = eta * cosI - Math.sqrt(k);
                 trace(px - delta * nx, py - delta * ny, pz - delta * nz,
-                        eta * dx + c * nx, eta * dy + c * ny, eta * dz + c * nz, depth - 1, wr * kt, wg * kt, wb * kt);
+                        eta * dx + c * snx, eta * dy + c * sny, eta * dz + c * snz, depth - 1, wr * kt, wg * kt, wb * kt);
             }
         }
     }
@@ -168,13 +185,14 @@ final class Tracer {
     /**
      * The reflected and refracted terms of a {@code fresnel -> true} material:
      * kt·(Fr·trace(reflected) + (1 − Fr)·trace(refracted)) + kr·trace(reflected), Fr = 1 under total
-     * internal reflection; the two reflected terms share one ray.
+     * internal reflection; the two reflected terms share one ray. The angles come from the shading
+     * normal s; the rays leave along the geometric normal n.
      */
     private void fresnel(double px, double py, double pz, double dx, double dy, double dz, double nx, double ny, double nz,
-            double rdx, double rdy, double rdz, boolean entering, double delta, int depth, double kr, double kt, double ior,
-            double wr, double wg, double wb) {
+            double sx, double sy, double sz, double rdx, double rdy, double rdz, boolean entering, double delta, int depth,
+            double kr, double kt, double ior, double wr, double wg, double wb) {
         double eta = entering ? 1 / ior : ior;
-        double cosI = -(dx * nx + dy * ny + dz * nz);
+        double cosI = -(dx * sx + dy * sy + dz * sz);
         double k = 1 - eta * eta * (1 - cosI * cosI);
         double cosT = k < 0 ? 0 : Math.sqrt(k);
         double fr = k < 0 ? 1 : Fresnel.reflectance(cosI, cosT, eta);
@@ -187,7 +205,7 @@ final class Tracer {
         if (refract > 0) {
             refractedRays++;
             double c = eta * cosI - cosT;
-            trace(px - delta * nx, py - delta * ny, pz - delta * nz, eta * dx + c * nx, eta * dy + c * ny, eta * dz + c * nz,
+            trace(px - delta * nx, py - delta * ny, pz - delta * nz, eta * dx + c * sx, eta * dy + c * sy, eta * dz + c * sz,
                     depth - 1, wr * refract, wg * refract, wb * refract);
         }
     }

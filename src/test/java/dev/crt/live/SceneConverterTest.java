@@ -13,11 +13,14 @@ import dev.crt.scene.Box;
 import dev.crt.scene.Cone;
 import dev.crt.scene.Cylinder;
 import dev.crt.scene.Csg;
+import dev.crt.scene.Cylinder;
 import dev.crt.scene.CsgOperation;
 import dev.crt.scene.Entity;
 import dev.crt.scene.GradientBackground;
 import dev.crt.scene.Light;
 import dev.crt.scene.Material;
+import dev.crt.scene.Mesh;
+import dev.crt.scene.MeshData;
 import dev.crt.scene.PanoramaBackground;
 import dev.crt.scene.ParallelLight;
 import dev.crt.scene.Picture;
@@ -53,7 +56,9 @@ class SceneConverterTest {
     static final Map<Class<?>, Object> NOT_DRAWN_YET = Map.of(
             Cylinder.class, new Cylinder(Vec3.ZERO, new Vec3(0, 1, 0), 1, true, M, Transform.IDENTITY, SourceSpan.NONE),
             Cone.class, new Cone(Vec3.ZERO, new Vec3(0, 1, 0), 1, 0, true, M, Transform.IDENTITY, SourceSpan.NONE),
-            Torus.class, new Torus(Vec3.ZERO, new Vec3(0, 1, 0), 1, 0.25, M, Transform.IDENTITY, SourceSpan.NONE));
+            Torus.class, new Torus(Vec3.ZERO, new Vec3(0, 1, 0), 1, 0.25, M, Transform.IDENTITY, SourceSpan.NONE),
+            Mesh.class, new Mesh(new MeshData("triangle", new double[] {0, 0, 0, 1, 0, 0, 0, 1, 0}, new int[] {0, 1, 2},
+                    null, null, false), true, M, Transform.IDENTITY, SourceSpan.NONE));
 
     /** One sample of every concrete kind the scene model has; a new kind must be added here and to the converter. */
     static final Map<Class<?>, Object> SAMPLES = Map.ofEntries(Map.entry(

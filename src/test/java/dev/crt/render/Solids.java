@@ -7,6 +7,8 @@ import dev.crt.scene.Cone;
 import dev.crt.scene.Cylinder;
 import dev.crt.scene.Csg;
 import dev.crt.scene.Entity;
+import dev.crt.scene.Mesh;
+import dev.crt.scene.MeshData;
 import dev.crt.scene.Plane;
 import dev.crt.scene.Sphere;
 import dev.crt.scene.Torus;
@@ -34,6 +36,7 @@ final class Solids {
             double rho = Math.sqrt(Math.max(0, v.dot(v) - h * h));
             return (rho - t.major()) * (rho - t.major()) + h * h <= t.minor() * t.minor();
         }
+        if (e instanceof Mesh m) return Math.abs(winding(m.data(), q)) > 0.5;
         if (e instanceof Cylinder c) return insideCone(c.from(), c.to(), c.radius(), c.radius(), q);
         if (e instanceof Cone c) return insideCone(c.from(), c.to(), c.radius(), c.radius2(), q);
         Csg c = (Csg) e;
@@ -43,6 +46,26 @@ final class Solids {
             case INTERSECTION -> a && b;
             case DIFFERENCE -> a && !b;
         };
+    }
+
+    /**
+     * The generalised winding number of a closed mesh about q: the solid angles of its triangles
+     * seen from q (Van Oosterom and Strackee) over 4π; ±1 inside, 0 outside, whichever way it is wound.
+     */
+    static double winding(MeshData m, Vec3 q) {
+        double[] p = m.positions();
+        int[] t = m.triangles();
+        double sum = 0;
+        for (int i = 0; i < t.length; i += 3) {
+            Vec3 a = new Vec3(p[3 * t[i]], p[3 * t[i] + 1], p[3 * t[i] + 2]).minus(q);
+            Vec3 b = new Vec3(p[3 * t[i + 1]], p[3 * t[i + 1] + 1], p[3 * t[i + 1] + 2]).minus(q);
+            Vec3 c = new Vec3(p[3 * t[i + 2]], p[3 * t[i + 2] + 1], p[3 * t[i + 2] + 2]).minus(q);
+            double la = a.length(), lb = b.length(), lc = c.length();
+            double num = a.dot(b.cross(c));
+            double den = la * lb * lc + a.dot(b) * lc + b.dot(c) * la + c.dot(a) * lb;
+            sum += 2 * Math.atan2(num, den);
+        }
+        return sum / (4 * Math.PI);
     }
 
     /** Within the radius interpolated at the point's projection on the segment from a to b, by distance to the line. */

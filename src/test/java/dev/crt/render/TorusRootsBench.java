@@ -19,7 +19,7 @@ import java.util.SplittableRandom;
  * reference root (one not within the tolerance of another, i.e. not half of a tangent pair too
  * close to matter) or returns a root with no reference root within the tolerance, 1e-7 of the
  * torus's size. Cost: nanoseconds per ray of the production path (move to the closest approach,
- * form the quartic, solve), the best of three passes over the same rays.
+ * form the quartic, solve), the best of nine passes over the same rays, the methods taking turns.
  *
  * <pre>mvn -B -q -o test-compile && java -cp target/classes:target/test-classes dev.crt.render.TorusRootsBench [rays per family] [csv]</pre>
  */
@@ -39,6 +39,7 @@ public final class TorusRootsBench {
             List<Case> cases = cases(f, n, new SplittableRandom(1234 + f));
             List<double[]> reference = new ArrayList<>();
             for (Case c : cases) reference.add(reference(c));
+            double[] ns = costs(cases);
             for (int m = 0; m < Quartic.NAMES.length; m++) {
                 int failed = 0, missed = 0, spurious = 0;
                 double[] out = new double[8];
@@ -57,9 +58,8 @@ public final class TorusRootsBench {
                     missed += miss;
                     spurious += extra;
                 }
-                double ns = cost(m, cases);
                 String line = String.format(Locale.ROOT, "%s,%s,%d,%d,%d,%d,%.3e,%.1f", Quartic.NAMES[m], FAMILIES[f],
-                        cases.size(), failed, missed, spurious, failed / (double) cases.size(), ns);
+                        cases.size(), failed, missed, spurious, failed / (double) cases.size(), ns[m]);
                 System.out.println(line);
                 lines.add(line);
             }
@@ -88,14 +88,23 @@ public final class TorusRootsBench {
         return k;
     }
 
-    private static double cost(int method, List<Case> cases) {
-        double best = Double.POSITIVE_INFINITY;
+    /**
+     * Nanoseconds per ray of each method: passes over the same rays taken in turn (one method,
+     * then the next, and again), the best pass of each, so that a busy moment of the machine
+     * does not land on one method only.
+     */
+    private static double[] costs(List<Case> cases) {
+        int methods = Quartic.NAMES.length;
+        double[] best = new double[methods];
+        java.util.Arrays.fill(best, Double.POSITIVE_INFINITY);
         double[] out = new double[8];
         double sink = 0;
-        for (int pass = 0; pass < 3; pass++) {
-            long t0 = System.nanoTime();
-            for (Case c : cases) sink += solve(method, c, out);
-            best = Math.min(best, (System.nanoTime() - t0) / (double) cases.size());
+        for (int pass = 0; pass < 9; pass++) {
+            for (int m = 0; m < methods; m++) {
+                long t0 = System.nanoTime();
+                for (Case c : cases) sink += solve(m, c, out);
+                best[m] = Math.min(best[m], (System.nanoTime() - t0) / (double) cases.size());
+            }
         }
         if (sink < 0) System.out.println(sink);
         return best;

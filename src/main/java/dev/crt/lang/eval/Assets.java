@@ -1,6 +1,7 @@
 package dev.crt.lang.eval;
 
 import dev.crt.image.PictureFiles;
+import dev.crt.scene.MeshData;
 import dev.crt.scene.PanoramaBackground;
 import dev.crt.scene.Picture;
 import java.io.IOException;
@@ -28,6 +29,8 @@ final class Assets {
     private final Path scriptFolder;
     private final List<Path> assetFolders;
     private final Map<Path, Picture> decoded = new HashMap<>();
+    /** Meshes by file: every instance of one file shares its triangles. */
+    private final Map<Path, MeshData> meshes = new HashMap<>();
 
     Assets(Path scriptFolder, List<Path> assetDirs) {
         this.scriptFolder = scriptFolder != null ? scriptFolder : Path.of("").toAbsolutePath();
@@ -50,6 +53,20 @@ final class Assets {
             decoded.put(file, picture);
         }
         return new PanoramaBackground(file.toString(), picture, angle);
+    }
+
+    MeshData mesh(String name) throws AssetProblem {
+        Path file = find(name, "mesh");
+        MeshData mesh = meshes.get(file);
+        if (mesh == null) {
+            try {
+                mesh = MeshFiles.read(file);
+            } catch (MeshBuilder.MeshProblem e) {
+                throw new AssetProblem("cannot use mesh '" + name + "': " + e.getMessage());
+            }
+            meshes.put(file, mesh);
+        }
+        return mesh;
     }
 
     private Path find(String name, String what) throws AssetProblem {

@@ -106,6 +106,12 @@ final class Attributes {
         return Vec3.ZERO;
     }
 
+    /** The raw value of an optional attribute, or null when it is not given. */
+    Value value(String name) {
+        Given g = given.get(name);
+        return g == null ? null : g.value();
+    }
+
     boolean bool(String name, boolean fallback) {
         Given g = given.get(name);
         if (g == null) return fallback;

@@ -20,6 +20,7 @@ import dev.crt.lang.value.VectorValue;
 import dev.crt.scene.Cone;
 import dev.crt.scene.Csg;
 import dev.crt.scene.Cylinder;
+import dev.crt.scene.Mesh;
 import dev.crt.scene.CsgOperation;
 import dev.crt.scene.Entity;
 import dev.crt.scene.Rgb;
@@ -544,8 +545,8 @@ public final class Evaluator extends CRTBaseVisitor<Value> {
             for (EntityValue operand : List.of(x, y)) {
                 String open = openSurface(operand.entity());
                 if (open != null) {
-                    throw error("an open " + open + " (capped -> false) is a surface, not a solid, so it cannot be used in CSG",
-                            span(ctx));
+                    throw error("an open " + open + (open.equals("Mesh") ? " (not watertight)" : " (capped -> false)")
+                            + " is a surface, not a solid, so it cannot be used in CSG", span(ctx));
                 }
             }
             return EntityValue.of(new Csg(operation, x.entity(), y.entity(), Transform.IDENTITY, span(ctx)));
@@ -893,6 +894,7 @@ public final class Evaluator extends CRTBaseVisitor<Value> {
     private static String openSurface(Entity e) {
         if (e instanceof Cylinder c && !c.capped()) return "Cylinder";
         if (e instanceof Cone c && !c.capped()) return "Cone";
+        if (e instanceof Mesh m && !m.data().closed()) return "Mesh";
         return null;
     }
 

@@ -8,10 +8,12 @@ import dev.crt.lang.value.BackgroundValue;
 import dev.crt.lang.value.CameraValue;
 import dev.crt.lang.value.EntityValue;
 import dev.crt.lang.value.LightValue;
+import dev.crt.lang.value.ListValue;
 import dev.crt.lang.value.MaterialValue;
 import dev.crt.lang.value.NumberValue;
 import dev.crt.lang.value.TextureValue;
 import dev.crt.lang.value.Value;
+import dev.crt.lang.value.VectorValue;
 import dev.crt.scene.ApertureShape;
 import dev.crt.scene.AreaLight;
 import dev.crt.scene.Background;
@@ -22,6 +24,8 @@ import dev.crt.scene.Cone;
 import dev.crt.scene.Cylinder;
 import dev.crt.scene.GradientBackground;
 import dev.crt.scene.Material;
+import dev.crt.scene.Mesh;
+import dev.crt.scene.MeshData;
 import dev.crt.scene.ParallelLight;
 import dev.crt.scene.Plane;
 import dev.crt.scene.PointLight;
@@ -62,6 +66,7 @@ final class ObjectBuilder {
         type("Box", ObjectBuilder::box, "cornerA", "cornerB", "material");
         type("Plane", ObjectBuilder::plane, "normal", "position", "material");
         type("Cylinder", ObjectBuilder::cylinder, "from", "to", "radius", "capped", "material");
+        type("Mesh", ObjectBuilder::mesh, "file", "vertices", "faces", "smooth", "material");
         type("Torus", ObjectBuilder::torus, "center", "axis", "major", "minor", "material");
         type("Cone", ObjectBuilder::cone, "from", "to", "radius", "radius2", "capped", "material");
         type("Background", ObjectBuilder::background, "color", "horizon", "sky", "image", "angle");
@@ -275,6 +280,79 @@ final class ObjectBuilder {
         axis(a, "Cylinder", from, to);
         return EntityValue.of(new Cylinder(from, to, a.number("radius", 1, Range.POSITIVE), a.bool("capped", true),
                 a.material("material"), Transform.IDENTITY, a.objectSpan()));
+    }
+
+    private Value mesh(Attributes a) {
+        boolean smooth = a.bool("smooth", true);
+        MeshData data = null;
+        if (a.has("file") == (a.has("vertices") || a.has("faces"))) {
+            String at = a.has("file") ? "file" : "";
+            a.error(at, "a Mesh takes either file, or vertices with faces");
+        } else if (a.has("file")) {
+            String file = a.string("file", null);
+            if (file != null) {
+                try {
+                    data = assets.mesh(file);
+                } catch (Assets.AssetProblem problem) {
+                    a.error("file", problem.getMessage());
+                }
+            }
+        } else if (!a.has("vertices") || !a.has("faces")) {
+            a.error(a.has("vertices") ? "vertices" : "faces", "an inline Mesh needs both vertices and faces");
+        } else {
+            data = inlineMesh(a);
+        }
+        if (data == null) {
+            a.markFailed();
+            return EntityValue.of(new Sphere(Vec3.ZERO, 0, a.material("material"), Transform.IDENTITY, a.objectSpan()));
+        }
+        return EntityValue.of(new Mesh(data, smooth, a.material("material"), Transform.IDENTITY, a.objectSpan()));
+    }
+
+    /** vertices: a list of vec3; faces: a list of lists of 0-based vertex indices (polygons are fanned). */
+    private MeshData inlineMesh(Attributes a) {
+        MeshBuilder b = new MeshBuilder();
+        String attribute = "vertices";
+        try {
+            if (!(a.value("vertices") instanceof ListValue vs)) {
+                a.error("vertices", "vertices must be a list of vec3");
+                return null;
+            }
+            for (int i = 0; i < vs.items().size(); i++) {
+                if (!(vs.items().get(i) instanceof VectorValue v)) {
+                    a.error("vertices", "vertices[" + i + "] must be a vec3, got " + vs.items().get(i).typeName());
+                    return null;
+                }
+                b.position(v.vector().x(), v.vector().y(), v.vector().z(), "");
+            }
+            attribute = "faces";
+            if (!(a.value("faces") instanceof ListValue fs)) {
+                a.error("faces", "faces must be a list of lists of vertex indices");
+                return null;
+            }
+            for (int i = 0; i < fs.items().size(); i++) {
+                if (!(fs.items().get(i) instanceof ListValue face)) {
+                    a.error("faces", "faces[" + i + "] must be a list of vertex indices");
+                    return null;
+                }
+                int n = face.items().size();
+                int[] corners = new int[3 * n];
+                for (int k = 0; k < n; k++) {
+                    if (!(face.items().get(k) instanceof NumberValue index) || !index.integral()) {
+                        a.error("faces", "faces[" + i + "][" + k + "] must be a whole number");
+                        return null;
+                    }
+                    corners[3 * k] = (int) Math.max(Integer.MIN_VALUE, Math.min(Integer.MAX_VALUE, index.value()));
+                    corners[3 * k + 1] = -1;
+                    corners[3 * k + 2] = -1;
+                }
+                b.polygon(corners, n, "faces[" + i + "]: ");
+            }
+            return b.finish("inline mesh");
+        } catch (MeshBuilder.MeshProblem problem) {
+            a.error(attribute, problem.getMessage());
+            return null;
+        }
     }
 
     private Value torus(Attributes a) {

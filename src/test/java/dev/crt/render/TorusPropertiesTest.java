@@ -20,7 +20,7 @@ import net.jqwik.api.Property;
  * Rays graze either circle (δ within 1e-8 of it), start up to 1e4 radii away, and tori sit up
  * to 1e5 from the origin at scales from 1e-3 to 1e3. Rays along the axis cross only spindle tori.
  */
-class TorusProperties {
+class TorusPropertiesTest {
     private static final Material M = matte(rgb(0.5, 0.5, 0.5));
 
     private static Vec3 unit(SplittableRandom r) {

@@ -20,7 +20,7 @@ import net.jqwik.api.Property;
  * closest approach. Rays graze (δ within 1e-9 of R), start up to 1e4 radii away, and the shapes
  * sit up to 1e5 from the origin at scales from 1e-3 to 1e3; rays along the axis meet the caps.
  */
-class ConeProperties {
+class ConePropertiesTest {
     private static final Material M = matte(rgb(0.5, 0.5, 0.5));
 
     private static Vec3 unit(SplittableRandom r) {

@@ -1,0 +1,72 @@
+package dev.crt.render;
+
+import dev.crt.geom.Aabb;
+import dev.crt.geom.Vec3;
+import dev.crt.scene.MeshData;
+
+/**
+ * One mesh prepared for rays, shared by all its instances (the lower level of the two-level
+ * hierarchy): its triangles reordered into the leaf order of a BVH of their own (or tested one by
+ * one when there are few), in the mesh's own coordinates.
+ */
+final class MeshGeometry {
+    /** Triangles up to which a mesh is tested without a hierarchy. */
+    static final int LINEAR_LIMIT = 8;
+
+    final double[] positions;
+    final double[] normals;
+    final double[] uvs;
+    /** Three vertex indices per triangle, in BVH leaf order. */
+    final int[] triangles;
+    final int count;
+    final Bvh bvh;
+    final boolean closed;
+    final Aabb bounds;
+
+    MeshGeometry(MeshData data) {
+        positions = data.positions();
+        normals = data.normals();
+        uvs = data.uvs();
+        closed = data.closed();
+        int[] source = data.triangles();
+        count = source.length / 3;
+        double[] flat = new double[6 * count];
+        double minX = Double.POSITIVE_INFINITY, minY = minX, minZ = minX;
+        double maxX = Double.NEGATIVE_INFINITY, maxY = maxX, maxZ = maxX;
+        for (int t = 0; t < count; t++) {
+            double x0 = Double.POSITIVE_INFINITY, y0 = x0, z0 = x0, x1 = Double.NEGATIVE_INFINITY, y1 = x1, z1 = x1;
+            for (int k = 0; k < 3; k++) {
+                int v = 3 * source[3 * t + k];
+                x0 = Math.min(x0, positions[v]);
+                y0 = Math.min(y0, positions[v + 1]);
+                z0 = Math.min(z0, positions[v + 2]);
+                x1 = Math.max(x1, positions[v]);
+                y1 = Math.max(y1, positions[v + 1]);
+                z1 = Math.max(z1, positions[v + 2]);
+            }
+            // Widened by an ulp, as the scene's items are: a box must not clip its triangle.
+            flat[6 * t] = Math.nextDown(x0);
+            flat[6 * t + 1] = Math.nextDown(y0);
+            flat[6 * t + 2] = Math.nextDown(z0);
+            flat[6 * t + 3] = Math.nextUp(x1);
+            flat[6 * t + 4] = Math.nextUp(y1);
+            flat[6 * t + 5] = Math.nextUp(z1);
+            minX = Math.min(minX, x0);
+            minY = Math.min(minY, y0);
+            minZ = Math.min(minZ, z0);
+            maxX = Math.max(maxX, x1);
+            maxY = Math.max(maxY, y1);
+            maxZ = Math.max(maxZ, z1);
+        }
+        bounds = new Aabb(new Vec3(minX, minY, minZ), new Vec3(maxX, maxY, maxZ));
+        if (count > LINEAR_LIMIT) {
+            int[] order = new int[count];
+            bvh = BvhBuilder.build(flat, count, order);
+            triangles = new int[3 * count];
+            for (int i = 0; i < count; i++) System.arraycopy(source, 3 * order[i], triangles, 3 * i, 3);
+        } else {
+            bvh = null;
+            triangles = source;
+        }
+    }
+}
