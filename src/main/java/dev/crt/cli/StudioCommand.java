@@ -19,12 +19,18 @@ final class StudioCommand implements Callable<Integer> {
     @Parameters(arity = "0..*", paramLabel = "SCENE", description = "Scene scripts (.crt) to open.")
     List<Path> scenes = List.of();
 
+    @picocli.CommandLine.Spec
+    picocli.CommandLine.Model.CommandSpec spec;
+
     @Override
     public Integer call() throws CliFailure {
         try {
             return Studio.run(scenes, StudioPaths.ofUser());
         } catch (Studio.NoDisplayException e) {
-            throw new CliFailure(ExitCode.USAGE, e.getMessage());
+            // Not a mistake in the command line, so one sentence and no pointer to --help.
+            spec.commandLine().getErr().println("crt: " + e.getMessage());
+            spec.commandLine().getErr().flush();
+            return ExitCode.USAGE;
         }
     }
 }
