@@ -1,18 +1,10 @@
 package dev.crt.image;
 
-import java.io.BufferedOutputStream;
 import java.io.IOException;
-import java.io.OutputStream;
-import java.nio.channels.Channels;
-import java.nio.channels.FileChannel;
-import java.nio.file.AtomicMoveNotSupportedException;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.nio.file.StandardCopyOption;
-import java.nio.file.StandardOpenOption;
 import java.util.Locale;
 import java.util.Map;
-import java.util.concurrent.ThreadLocalRandom;
 
 /** Reading and writing image files; the format follows the file name's extension. */
 public final class ImageFiles {
@@ -39,12 +31,8 @@ public final class ImageFiles {
         writeAtomically(out, stream -> PfmWriter.writeGrey(values, width, height, stream));
     }
 
-    /** Writes the bytes a body produces into a temporary file beside {@code out}, then renames it into place. */
-    private interface Body {
-        void write(OutputStream stream) throws IOException;
-    }
-
-    private static void writeAtomically(Path out, Body body) throws IOException {
+    /** Writes through {@link AtomicFile}, after checking the folder, with the image writers' messages. */
+    private static void writeAtomically(Path out, AtomicFile.Body body) throws IOException {
         Path target = out.toAbsolutePath();
         Path folder = target.getParent();
         if (folder == null || !Files.exists(folder)) {
@@ -53,28 +41,10 @@ public final class ImageFiles {
         if (!Files.isDirectory(folder)) {
             throw new IOException("cannot write " + out + ": " + folder + " is a file, not a folder");
         }
-        Path temp = folder.resolve("." + target.getFileName() + ".tmp-"
-                + Long.toHexString(ThreadLocalRandom.current().nextLong() & Long.MAX_VALUE));
         try {
-            try (FileChannel channel = FileChannel.open(temp, StandardOpenOption.CREATE_NEW, StandardOpenOption.WRITE);
-                    OutputStream stream = new BufferedOutputStream(Channels.newOutputStream(channel), 1 << 16)) {
-                body.write(stream);
-                stream.flush();
-                channel.force(true);
-            }
-            try {
-                Files.move(temp, target, StandardCopyOption.ATOMIC_MOVE, StandardCopyOption.REPLACE_EXISTING);
-            } catch (AtomicMoveNotSupportedException e) {
-                Files.move(temp, target, StandardCopyOption.REPLACE_EXISTING);
-            }
-        } catch (IOException | RuntimeException | Error e) {
-            try {
-                Files.deleteIfExists(temp);
-            } catch (IOException suppressed) {
-                e.addSuppressed(suppressed);
-            }
-            if (e instanceof IOException io) throw new IOException("cannot write " + out + ": " + describe(io), io);
-            throw e;
+            AtomicFile.write(target, body);
+        } catch (IOException e) {
+            throw new IOException("cannot write " + out + ": " + describe(e), e);
         }
     }
 

@@ -93,8 +93,7 @@ public final class Renderer {
         AtomicBoolean cancelled = new AtomicBoolean();
         long total = (long) width * height * passes;
         List<Tracer> tracers = new ArrayList<>();
-        List<Thread> pool = new ArrayList<>();
-        Throwable[] failure = new Throwable[1];
+        List<Runnable> pool = new ArrayList<>();
         // Tells the monitor the counted work begins now, before the first tile is done.
         monitor.progress(0, total);
         for (int w = 0; w < workers; w++) {
@@ -136,32 +135,9 @@ public final class Renderer {
                     monitor.progress(donePixels.addAndGet((long) (x1 - x0) * (y1 - y0)), total);
                 }
             };
-            Thread t = new Thread(null, () -> {
-                try {
-                    work.run();
-                } catch (Throwable e) {
-                    cancelled.set(true);
-                    synchronized (failure) {
-                        if (failure[0] == null) failure[0] = e;
-                    }
-                }
-            }, "crt-render-" + w, RENDER_STACK);
-            t.setDaemon(true);
-            pool.add(t);
+            pool.add(work);
         }
-        pool.forEach(Thread::start);
-        boolean interrupted = false;
-        for (Thread t : pool) {
-            while (true) {
-                try {
-                    t.join();
-                    break;
-                } catch (InterruptedException e) {
-                    interrupted = true;
-                    cancelled.set(true);
-                }
-            }
-        }
+        runOnThreads(pool, "crt-render-", cancelled);
         long primary = 0, shadow = 0, reflected = 0, refracted = 0;
         for (Tracer t : tracers) {
             primary += t.primaryRays;
@@ -170,9 +146,6 @@ public final class Renderer {
             refracted += t.refractedRays;
         }
         stats = new RenderStats(primary, shadow, reflected, refracted, buildNanos, System.nanoTime() - start);
-        if (interrupted) Thread.currentThread().interrupt();
-        if (failure[0] instanceof RuntimeException e) throw e;
-        if (failure[0] instanceof Error e) throw e;
         if (cancelled.get()) throw new RenderCancelledException();
         return image;
     }
@@ -258,41 +231,61 @@ public final class Renderer {
         int width = settings.width(), height = settings.height();
         CameraRays camera = new CameraRays(settings.camera(), width, height);
         AtomicInteger nextRow = new AtomicInteger();
+        AtomicBoolean stop = new AtomicBoolean();
         int workers = Math.max(1, Math.min(Runtime.getRuntime().availableProcessors(), height));
-        List<Thread> pool = new ArrayList<>();
-        Throwable[] failure = new Throwable[1];
+        List<Runnable> pool = new ArrayList<>();
         for (int w = 0; w < workers; w++) {
             Tracer tracer = new Tracer(geometry, lights, background);
+            pool.add(() -> {
+                double[] d = new double[3];
+                int y;
+                while (!stop.get() && (y = nextRow.getAndIncrement()) < height) {
+                    for (int x = 0; x < width; x++) {
+                        camera.direction(x, y, 0.5, 0.5, d);
+                        boolean hit = tracer.closestHit(camera.px, camera.py, camera.pz, d[0], d[1], d[2],
+                                Double.POSITIVE_INFINITY);
+                        sink.accept(y * width + x, hit ? tracer : null);
+                    }
+                }
+            });
+        }
+        runOnThreads(pool, "crt-pass-", stop);
+    }
+
+    /**
+     * Runs each task on a thread of its own (with the render's large stack) and waits for all of
+     * them. A task that fails, or an interrupt of the waiting thread, sets {@code stop} so the
+     * others can end early; the first failure is rethrown once every thread has ended, and the
+     * interrupt is kept.
+     */
+    private static void runOnThreads(List<Runnable> tasks, String name, AtomicBoolean stop) {
+        Throwable[] failure = new Throwable[1];
+        List<Thread> threads = new ArrayList<>();
+        for (int i = 0; i < tasks.size(); i++) {
+            Runnable task = tasks.get(i);
             Thread t = new Thread(null, () -> {
                 try {
-                    double[] d = new double[3];
-                    int y;
-                    while ((y = nextRow.getAndIncrement()) < height) {
-                        for (int x = 0; x < width; x++) {
-                            camera.direction(x, y, 0.5, 0.5, d);
-                            boolean hit = tracer.closestHit(camera.px, camera.py, camera.pz, d[0], d[1], d[2],
-                                    Double.POSITIVE_INFINITY);
-                            sink.accept(y * width + x, hit ? tracer : null);
-                        }
-                    }
+                    task.run();
                 } catch (Throwable e) {
+                    stop.set(true);
                     synchronized (failure) {
                         if (failure[0] == null) failure[0] = e;
                     }
                 }
-            }, "crt-pass-" + w, RENDER_STACK);
+            }, name + i, RENDER_STACK);
             t.setDaemon(true);
-            pool.add(t);
+            threads.add(t);
         }
-        pool.forEach(Thread::start);
+        threads.forEach(Thread::start);
         boolean interrupted = false;
-        for (Thread t : pool) {
+        for (Thread t : threads) {
             while (true) {
                 try {
                     t.join();
                     break;
                 } catch (InterruptedException e) {
                     interrupted = true;
+                    stop.set(true);
                 }
             }
         }
