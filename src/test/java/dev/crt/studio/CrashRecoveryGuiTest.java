@@ -84,13 +84,13 @@ class CrashRecoveryGuiTest {
             question.requireMessage(Pattern.compile("(?s).*crash\\.crt.*Recover.*"));
             // The finder can return the question before its dialog is on the screen; click once it is,
             // and again if the first click came while the dialog was still being laid out.
-            waitFor("the question on the screen", 10, () -> question.target().isShowing());
+            waitFor("the question on the screen", 30, () -> question.target().isShowing());
             for (int i = 0; i < 4 && onEdt(() -> question.target().isShowing()); i++) {
                 question.yesButton().click();
                 robot.waitForIdle();
             }
             try {
-                waitFor("the recovered script", 10, () -> studio[0] != null && studio[0].model().find(script).isPresent());
+                waitFor("the recovered script", 30, () -> studio[0] != null && studio[0].model().find(script).isPresent());
             } catch (AssertionError e) {
                 throw new AssertionError(e.getMessage() + "; open: " + onEdt(() -> studio[0] == null ? null
                         : studio[0].model().documents().stream().map(ScriptDocument::name).toList()), e);
@@ -102,7 +102,7 @@ class CrashRecoveryGuiTest {
             // Saving it makes the copy go.
             onEdt(() -> studio[0].save(d));
             assertThat(Files.readString(script)).isEqualTo(original + typed);
-            waitFor("the recovery copy deleted", 5, () -> listing(recovery).isEmpty());
+            waitFor("the recovery copy deleted", 15, () -> listing(recovery).isEmpty());
         } finally {
             if (studio[0] != null) onEdt(() -> studio[0].quit());
             robot.cleanUp();
