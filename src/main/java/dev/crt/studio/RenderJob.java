@@ -10,6 +10,7 @@ import dev.crt.render.RenderMonitor;
 import dev.crt.render.Renderer;
 import dev.crt.scene.Scene;
 import dev.crt.scene.Settings;
+import dev.crt.scene.Shading;
 import java.awt.image.BufferedImage;
 import java.awt.image.DataBufferInt;
 import java.util.concurrent.atomic.AtomicBoolean;
@@ -55,7 +56,11 @@ final class RenderJob {
     private final long startNanos = System.nanoTime();
     private volatile long firstPictureNanos = -1;
 
-    RenderJob(Source source, CompileResult compiled, Listener listener) {
+    /** The shading model chosen in the Render menu for this session, or null for the script's own. */
+    private final Shading shading;
+
+    RenderJob(Source source, CompileResult compiled, Shading shading, Listener listener) {
+        this.shading = shading;
         thread = new Thread(() -> run(source, compiled, listener), "crt-studio-render");
         thread.setDaemon(true);
     }
@@ -83,7 +88,8 @@ final class RenderJob {
                 SwingUtilities.invokeLater(() -> listener.compileFailed(compile));
                 return;
             }
-            Scene scene = compile.scene();
+            Scene scene = shading == null ? compile.scene()
+                    : compile.scene().withSettings(compile.scene().settings().withShading(shading));
             Settings settings = scene.settings();
             int width = settings.width(), height = settings.height();
             double gamma = settings.outputGamma();

@@ -12,6 +12,7 @@ import dev.crt.render.Pick;
 import dev.crt.render.RenderStats;
 import dev.crt.scene.Entity;
 import dev.crt.scene.Settings;
+import dev.crt.scene.Shading;
 import java.awt.BorderLayout;
 import java.awt.Dimension;
 import java.awt.Frame;
@@ -88,6 +89,8 @@ final class StudioWindow implements StudioModel.Listener {
         recentMenu.setMnemonic(KeyEvent.VK_R);
     }
     private final JCheckBoxMenuItem renderOnSaveItem = new JCheckBoxMenuItem();
+    /** Render → "Look of CRT 2015": renders use shading "original" whatever the script says (this session only). */
+    private final JCheckBoxMenuItem originalShadingItem = new JCheckBoxMenuItem();
     private final Map<String, JRadioButtonMenuItem> themeItems = new HashMap<>();
     private final Timer diskWatch;
     private final Timer heapTimer;
@@ -275,6 +278,8 @@ final class StudioWindow implements StudioModel.Listener {
             settings.renderOnSave = !settings.renderOnSave;
             renderOnSaveItem.setSelected(settings.renderOnSave);
         });
+        action("originalShading", "Look of CRT 2015 (shading original)", ctrlShift(KeyEvent.VK_L),
+                () -> originalShadingItem.setSelected(!originalShadingItem.isSelected()));
         action("shortcuts", "Keyboard shortcuts", KeyStroke.getKeyStroke(KeyEvent.VK_F1, 0), this::showShortcuts);
         action("about", "About CRT Studio", KeyStroke.getKeyStroke(KeyEvent.VK_F1, InputEvent.SHIFT_DOWN_MASK), () -> JOptionPane.showMessageDialog(frame,
                 "CRT Studio: write .crt scene scripts and render them with the Cathode Ray Tracer.\nJava "
@@ -306,6 +311,10 @@ final class StudioWindow implements StudioModel.Listener {
         renderOnSaveItem.setSelected(settings.renderOnSave);
         renderOnSaveItem.addActionListener(e -> settings.renderOnSave = renderOnSaveItem.isSelected());
         render.add(renderOnSaveItem);
+        originalShadingItem.setText("Look of CRT 2015 (shading original)");
+        originalShadingItem.setAccelerator((KeyStroke) actions.get("originalShading").getValue(Action.ACCELERATOR_KEY));
+        originalShadingItem.getAccessibleContext().setAccessibleName("Look of CRT 2015");
+        render.add(originalShadingItem);
         bar.add(render);
         bar.add(menu("Help", KeyEvent.VK_H, "shortcuts", "about"));
         return bar;
@@ -372,7 +381,7 @@ final class StudioWindow implements StudioModel.Listener {
         // The editor's own keys (undo, comment, completion, Esc for its popups) stay; the studio's
         // file, render and find keys take precedence over any default text binding.
         for (String n : new String[] {"new", "open", "save", "saveAs", "close", "quit", "find", "replace", "render",
-                "zoomFit", "zoomActual", "saveImage", "toggleTheme", "light", "dark", "resetLayout", "renderOnSave",
+                "zoomFit", "zoomActual", "saveImage", "toggleTheme", "light", "dark", "resetLayout", "renderOnSave", "originalShading",
                 "shortcuts", "about"}) {
             KeyStroke key = (KeyStroke) actions.get(n).getValue(Action.ACCELERATOR_KEY);
             editor.area().getInputMap().put(key, "crt." + n);
@@ -714,7 +723,8 @@ final class StudioWindow implements StudioModel.Listener {
         progress.setVisible(true);
         renderStatus.setText("rendering " + d.name() + "…");
         RenderJob[] self = new RenderJob[1];
-        self[0] = new RenderJob(d.source(), compiled, new RenderJob.Listener() {
+        Shading shading = originalShadingItem.isSelected() ? Shading.ORIGINAL : null;
+        self[0] = new RenderJob(d.source(), compiled, shading, new RenderJob.Listener() {
             @Override public void picture(java.awt.image.BufferedImage image, boolean coarse) {
                 if (job != self[0]) return;
                 renderView.show(image);
