@@ -12,15 +12,17 @@ import dev.crt.scene.Camera;
  * <p>Layout of an entity at texel {@code o}: {@code o} = (leaves, program length, entity index,
  * scale), {@code o+1} = (bounds min, unbounded flag), {@code o+2} = (bounds max, 0), then one
  * texel per program step (opcode, leaf, 0, 0) in postfix order, then {@link #LEAF_TEXELS} texels
- * per primitive: (kind, 0, 0, 0), three rows of the world-to-local matrix (a plane keeps its
- * world normal and offset in the first), local box min, local box max, (colour, diffuse),
- * (specular, shininess, transparency, reflectivity), (emission, 0).
+ * per primitive: (kind, parameters), three rows of the world-to-local matrix (a plane keeps its
+ * world normal and offset in the first), local box min and max (a cone: its length, then 0),
+ * (colour, diffuse),
+ * (specular, shininess, transparency, reflectivity), (emission, 0). Parameters: a cone's
+ * (r0, r1, capped), a torus's (major, minor, 0), zeros otherwise.
  */
 public final class GpuScene {
     public static final int HEADER_TEXELS = 3;
     public static final int LEAF_TEXELS = 9;
     /** Primitive kinds as the shader reads them. */
-    public static final int SPHERE = 0, BOX = 1, PLANE = 2, EMPTY = 3;
+    public static final int SPHERE = 0, BOX = 1, PLANE = 2, EMPTY = 3, CONE = 4, TORUS = 5;
     /** Program opcodes as the shader reads them. */
     public static final int OP_LEAF = 0, OP_UNION = 1, OP_INTERSECTION = 2, OP_DIFFERENCE = 3;
     /** The shader's limits: primitives per top-level entity (a 32-bit inside mask) and lights. */

@@ -4,6 +4,8 @@ import dev.crt.geom.Aabb;
 import dev.crt.geom.Transform;
 import dev.crt.geom.Vec3;
 import dev.crt.scene.Box;
+import dev.crt.scene.Cone;
+import dev.crt.scene.Cylinder;
 import dev.crt.scene.Csg;
 import dev.crt.scene.Entity;
 import dev.crt.scene.Light;
@@ -16,6 +18,7 @@ import dev.crt.scene.SpotLight;
 import dev.crt.scene.Primitive;
 import dev.crt.scene.Scene;
 import dev.crt.scene.Sphere;
+import dev.crt.scene.Torus;
 import java.util.Arrays;
 import java.util.List;
 
@@ -210,6 +213,9 @@ public final class SceneConverter {
         if (e instanceof Sphere s) return sphere(s, t);
         if (e instanceof Box b) return box(b, t);
         if (e instanceof Plane p) return plane(p, t);
+        if (e instanceof Cylinder c) return cone(c.from(), c.to(), c.radius(), c.radius(), c.capped(), c.material(), t);
+        if (e instanceof Cone c) return cone(c.from(), c.to(), c.radius(), c.radius2(), c.capped(), c.material(), t);
+        if (e instanceof Torus tr) return torus(tr, t);
         if (e instanceof Csg c) {
             Aabb left = leaves(c.left(), t);
             Aabb right = leaves(c.right(), t);
@@ -223,12 +229,7 @@ public final class SceneConverter {
     }
 
     private Aabb sphere(Sphere s, Transform t) {
-        if (!(s.radius() > 0)) {
-            leafHeader(GpuScene.EMPTY);
-            zeros(5);
-            material(s.material());
-            return Aabb.EMPTY;
-        }
+        if (!(s.radius() > 0)) return empty(s.material());
         double r = s.radius();
         Transform unit = Transform.scaling(new Vec3(r, r, r)).then(Transform.translation(s.center())).then(t);
         leafHeader(GpuScene.SPHERE);
@@ -244,6 +245,46 @@ public final class SceneConverter {
             hi[i] = m[4 * i + 3] + e;
         }
         return new Aabb(new Vec3(lo[0], lo[1], lo[2]), new Vec3(hi[0], hi[1], hi[2]));
+    }
+
+    private Aabb empty(Material m) {
+        leafHeader(GpuScene.EMPTY);
+        zeros(5);
+        material(m);
+        return Aabb.EMPTY;
+    }
+
+    /**
+     * A cylinder (r0 = r1), cone or frustum, as the ray tracer places it: a frame whose z runs
+     * along the axis from {@code from} (0) to {@code to} (1) and whose x, y are scene units across.
+     */
+    private Aabb cone(Vec3 from, Vec3 to, double r0, double r1, boolean capped, Material m, Transform t) {
+        Vec3 w = to.minus(from);
+        double length = w.length();
+        if (!(length > 0) || !(r0 > 0 || r1 > 0)) return empty(m);
+        Vec3[] axes = Transform.axes(w.div(length));
+        Transform local = Transform.frame(axes[0], axes[1], w, from).then(t);
+        texel(GpuScene.CONE, r0, r1, capped ? 1 : 0);
+        matrix(local.inverseMatrix());
+        texel(length, 0, 0, 0);
+        zeros(1);
+        material(m);
+        double rm = Math.max(r0, r1);
+        return new Aabb(new Vec3(-rm, -rm, 0), new Vec3(rm, rm, 1)).transformed(local);
+    }
+
+    /** A torus in the ray tracer's frame: centred at the origin, axis z, scene units. */
+    private Aabb torus(Torus tr, Transform t) {
+        double length = tr.axis().length();
+        if (!(length > 0) || !(tr.major() > 0) || !(tr.minor() > 0)) return empty(tr.material());
+        Vec3[] axes = Transform.axes(tr.axis().div(length));
+        Transform local = Transform.frame(axes[0], axes[1], axes[2], tr.center()).then(t);
+        texel(GpuScene.TORUS, tr.major(), tr.minor(), 0);
+        matrix(local.inverseMatrix());
+        zeros(2);
+        material(tr.material());
+        double e = tr.major() + tr.minor(), h = tr.minor();
+        return new Aabb(new Vec3(-e, -e, -h), new Vec3(e, e, h)).transformed(local);
     }
 
     private Aabb box(Box b, Transform t) {

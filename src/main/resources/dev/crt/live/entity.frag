@@ -16,7 +16,7 @@ void main() {
     float a, b;
     // One primitive: the program is one step, so the primitive follows the header at once.
     if (!leafSpan(entity + 4, ro, rd, a, b)) discard;
-    t = a > 0.0 ? a : b;
+    t = firstAfter(a, b, 0.0);
     if (!(t > 0.0) || t == INF) discard;
     leaf = 0;
 #else

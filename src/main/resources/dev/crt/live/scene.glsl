@@ -3,17 +3,204 @@
 // the CSG program on the set of primitives the ray is inside: the same method as the ray tracer.
 uniform samplerBuffer scene;
 
-const int SPHERE = 0, BOX = 1, PLANE = 2;
+const int SPHERE = 0, BOX = 1, PLANE = 2, EMPTY = 3, CONE = 4, TORUS = 5;
 const int LEAF_TEXELS = 9;
-const int MAX_EVENTS = 64;
+// Two per primitive, four for a torus (two intervals).
+const int MAX_EVENTS = 128;
 
 float evT[MAX_EVENTS];
 int evL[MAX_EVENTS];
+// A torus's second interval along the ray (leafSpan returns the first); INF when there is none.
+float span2A, span2B;
 
 vec4 T(int i) { return texelFetch(scene, i); }
 
+// The first hit after tMin of one primitive from its spans.
+float firstAfter(float a, float b, float tMin) {
+    return a > tMin ? a : b > tMin ? b : span2A > tMin ? span2A : span2B;
+}
+
+// The quartic s^4 + c2 s^2 + c1 s + c0 and its derivative, Horner's way.
+float quartic(float s, vec3 c) { return ((s * s + c.x) * s + c.y) * s + c.z; }
+float quarticSlope(float s, vec3 c) { return (4.0 * s * s + 2.0 * c.x) * s + c.y; }
+
+// The root of the quartic in [lo, hi], where it is monotone and changes sign: Newton steps kept
+// inside a shrinking bracket (bisection when a step leaves it), robust in float32.
+float quarticRoot(float lo, float hi, vec3 c) {
+    bool negLo = quartic(lo, c) < 0.0;
+    float x = 0.5 * (lo + hi);
+    for (int i = 0; i < 16; i++) {
+        float fx = quartic(x, c);
+        if ((fx < 0.0) == negLo) lo = x; else hi = x;
+        float xn = x - fx / quarticSlope(x, c);
+        x = xn > lo && xn < hi ? xn : 0.5 * (lo + hi);
+    }
+    return x;
+}
+
+bool torusInside(vec3 p, float big, float small) {
+    float rho = length(p.xy) - big;
+    return rho * rho + p.z * p.z <= small * small;
+}
+
+// The torus in its local frame (axis z, scene units): the line moved to its closest approach to
+// the centre with a unit direction, so the quartic in s is depressed and of the torus's size; its
+// real roots are isolated between the critical points (the roots of the cubic derivative), and the
+// intervals inside are read from the inside test at midpoints, so a spindle torus's inner sheet
+// never counts as a surface.
+bool torusSpan(vec4 hd, vec3 o, vec3 d, out float a, out float b) {
+    float big = hd.y, small = hd.z;
+    float len = length(d);
+    vec3 u = d / len;
+    float s0 = -dot(o, u);
+    vec3 c = o + s0 * u;
+    float g = dot(c, c);
+    float reach = big + small;
+    if (g > reach * reach) return false;
+    float k = g + (big - small) * (big + small);
+    float r2 = 4.0 * big * big;
+    vec3 co = vec3(2.0 * k - r2 * dot(u.xy, u.xy), -2.0 * r2 * dot(c.xy, u.xy), k * k - r2 * dot(c.xy, c.xy));
+    float bound = sqrt(reach * reach - g) * 1.001 + 1e-5 * reach;
+    // Critical points: s^3 + p s + q = 0 with p = c2/2, q = c1/4.
+    float p = 0.5 * co.x, q = 0.25 * co.y;
+    float cp[5];
+    int nc = 0;
+    cp[nc++] = -bound;
+    float D = 0.25 * q * q + p * p * p / 27.0;
+    if (D >= 0.0 || p >= 0.0) {
+        float A = -sign(q) * pow(abs(0.5 * q) + sqrt(max(D, 0.0)), 1.0 / 3.0);
+        float x = A != 0.0 ? A - p / (3.0 * A) : 0.0;
+        if (abs(x) < bound) cp[nc++] = x;
+    } else {
+        float m = 2.0 * sqrt(-p / 3.0);
+        float th = acos(clamp(3.0 * q / (p * m), -1.0, 1.0)) / 3.0;
+        for (int i = 2; i >= 0; i--) {
+            float x = m * cos(th - 2.0 * PI * float(i) / 3.0);
+            if (abs(x) < bound) cp[nc++] = x;
+        }
+    }
+    cp[nc++] = bound;
+    float roots[4];
+    int n = 0;
+    for (int i = 0; i + 1 < nc; i++) {
+        float lo = cp[i], hi = cp[i + 1];
+        if (!(lo < hi)) continue;
+        if ((quartic(lo, co) < 0.0) != (quartic(hi, co) < 0.0) && n < 4) roots[n++] = quarticRoot(lo, hi, co);
+    }
+    a = INF;
+    b = INF;
+    int spans = 0;
+    bool open = false;
+    float start = 0.0;
+    for (int i = 0; i + 1 < n; i++) {
+        float m = 0.5 * (roots[i] + roots[i + 1]);
+        bool within = torusInside(c + m * u, big, small);
+        if (within && !open) { start = roots[i]; open = true; }
+        if (!within && open) {
+            open = false;
+            if (spans == 0) { a = (start + s0) / len; b = (roots[i] + s0) / len; }
+            else { span2A = (start + s0) / len; span2B = (roots[i] + s0) / len; }
+            spans++;
+        }
+    }
+    if (open) {
+        if (spans == 0) { a = (start + s0) / len; b = (roots[n - 1] + s0) / len; }
+        else { span2A = (start + s0) / len; span2B = (roots[n - 1] + s0) / len; }
+        spans++;
+    }
+    return spans > 0;
+}
+
+// Cylinders, cones and frusta in a frame where the axis runs from z = 0 to z = 1 and x, y are in
+// scene units: the side x^2 + y^2 = R(z)^2, R(z) = r0 + (r1 - r0) z, within the slab, the caps
+// when capped; an open tube gives its crossings (two as an interval, one as an unbounded one).
+bool coneSpan(vec4 hd, vec3 o, vec3 d, out float a, out float b) {
+    float r0 = hd.y, k = hd.z - hd.y;
+    // Moved to the closest approach to the axis's middle, as the ray tracer does.
+    float t0 = -(dot(o.xy, d.xy) + (o.z - 0.5) * d.z) / dot(d, d);
+    vec3 c = o + t0 * d;
+    float sLo, sHi;
+    if (d.z == 0.0) {
+        if (c.z < 0.0 || c.z > 1.0) return false;
+        sLo = -INF;
+        sHi = INF;
+    } else {
+        float s0 = -c.z / d.z, s1 = (1.0 - c.z) / d.z;
+        sLo = min(s0, s1);
+        sHi = max(s0, s1);
+    }
+    float rho = r0 + k * c.z, kappa = k * d.z;
+    float qa = dot(d.xy, d.xy) - kappa * kappa;
+    float qb = dot(c.xy, d.xy) - rho * kappa;
+    float qc = dot(c.xy, c.xy) - rho * rho;
+    int nr = 0;
+    float x1 = 0.0, x2 = 0.0;
+    if (qa != 0.0) {
+        float disc = qb * qb - qa * qc;
+        if (disc >= 0.0) {
+            float q = qb >= 0.0 ? -qb - sqrt(disc) : -qb + sqrt(disc);
+            if (q != 0.0) {
+                x1 = min(q / qa, qc / q);
+                x2 = max(q / qa, qc / q);
+            }
+            nr = 2;
+        }
+    } else if (qb != 0.0) {
+        x1 = -qc / (2.0 * qb);
+        nr = 1;
+    }
+    if (hd.w == 0.0) {
+        bool in1 = nr >= 1 && x1 >= sLo && x1 <= sHi;
+        bool in2 = nr == 2 && x2 >= sLo && x2 <= sHi && x2 != x1;
+        if (in1 && in2) { a = x1 + t0; b = x2 + t0; return true; }
+        if (!in1 && !in2) return false;
+        a = (in1 ? x1 : x2) + t0;
+        b = INF;
+        return true;
+    }
+    // Inside the double cone as one or two pieces; at most one meets the slab (a frustum is convex).
+    float aLo, aHi, bLo = 1.0, bHi = 0.0;
+    if (qa > 0.0) {
+        if (nr == 0) return false;
+        aLo = x1;
+        aHi = x2;
+    } else if (qa < 0.0) {
+        aLo = -INF;
+        if (nr == 0) {
+            aHi = INF;
+        } else {
+            aHi = x1;
+            bLo = x2;
+            bHi = INF;
+        }
+    } else if (qb == 0.0) {
+        if (qc > 0.0) return false;
+        aLo = -INF;
+        aHi = INF;
+    } else if (qb > 0.0) {
+        aLo = -INF;
+        aHi = x1;
+    } else {
+        aLo = x1;
+        aHi = INF;
+    }
+    float lo = max(aLo, sLo), hi = min(aHi, sHi);
+    float lo2 = max(bLo, sLo), hi2 = min(bHi, sHi);
+    if (lo2 <= hi2 && !(lo <= hi && hi - lo >= hi2 - lo2)) {
+        lo = lo2;
+        hi = hi2;
+    }
+    if (!(lo <= hi)) return false;
+    a = lo + t0;
+    b = hi + t0;
+    return true;
+}
+
 bool leafSpan(int L, vec3 ro, vec3 rd, out float a, out float b) {
-    int kind = int(T(L).x);
+    span2A = INF;
+    span2B = INF;
+    vec4 hd = T(L);
+    int kind = int(hd.x);
     if (kind == PLANE) {
         vec4 pl = T(L + 1);
         float dn = dot(pl.xyz, rd), on = dot(pl.xyz, ro);
@@ -22,10 +209,12 @@ bool leafSpan(int L, vec3 ro, vec3 rd, out float a, out float b) {
         if (dn < 0.0) { a = t; b = INF; } else { a = -INF; b = t; }
         return true;
     }
-    if (kind > PLANE) return false;
+    if (kind == EMPTY) return false;
     vec4 r0 = T(L + 1), r1 = T(L + 2), r2 = T(L + 3);
     vec3 o = vec3(dot(r0.xyz, ro) + r0.w, dot(r1.xyz, ro) + r1.w, dot(r2.xyz, ro) + r2.w);
     vec3 d = vec3(dot(r0.xyz, rd), dot(r1.xyz, rd), dot(r2.xyz, rd));
+    if (kind == CONE) return coneSpan(hd, o, d, a, b);
+    if (kind == TORUS) return torusSpan(hd, o, d, a, b);
     if (kind == SPHERE) {
         // The stable form: the discriminant from the closest approach, the small root from c/q.
         float aa = dot(d, d), bb = dot(o, d);
@@ -80,7 +269,7 @@ float walk(int o, vec3 ro, vec3 rd, float tMin, float tMax, bool transmittance, 
     if (leaves == 1 && !transmittance) {
         float a, b;
         if (!leafSpan(first, ro, rd, a, b)) return 0.0;
-        float t = a > tMin ? a : b;
+        float t = firstAfter(a, b, tMin);
         if (t > tMin && t < tMax) { tHit = t; leafHit = 0; return 1.0; }
         return 0.0;
     }
@@ -89,14 +278,21 @@ float walk(int o, vec3 ro, vec3 rd, float tMin, float tMax, bool transmittance, 
     for (int k = 0; k < leaves; k++) {
         float a, b;
         if (!leafSpan(first + k * LEAF_TEXELS, ro, rd, a, b)) continue;
-        if (a <= tMin) {
-            if (b > tMin) {
-                mask |= 1u << uint(k);
+        for (int part = 0; part < 2; part++) {
+            if (part == 1) {
+                if (span2A == INF) break;
+                a = span2A;
+                b = span2B;
+            }
+            if (a <= tMin) {
+                if (b > tMin) {
+                    mask |= 1u << uint(k);
+                    if (b != INF) { evT[n] = b; evL[n] = k; n++; }
+                }
+            } else {
+                evT[n] = a; evL[n] = k; n++;
                 if (b != INF) { evT[n] = b; evL[n] = k; n++; }
             }
-        } else {
-            evT[n] = a; evL[n] = k; n++;
-            if (b != INF) { evT[n] = b; evL[n] = k; n++; }
         }
     }
     for (int i = 1; i < n; i++) {
@@ -141,6 +337,20 @@ vec3 normalAt(int L, vec3 p) {
     vec3 n;
     if (kind == SPHERE) {
         n = q;
+    } else if (kind == CONE) {
+        // The cap or the side, whichever the point lies closer to (in scene units: the frame's z is the length).
+        vec4 hd = T(L);
+        float k = hd.z - hd.y, z = clamp(q.z, 0.0, 1.0), r = hd.y + k * z, rho = length(q.xy);
+        float capDistance = min(abs(q.z), abs(q.z - 1.0)) * T(L + 4).x;
+        if (hd.w != 0.0 && capDistance < abs(rho - r)) n = vec3(0.0, 0.0, q.z < 0.5 ? -1.0 : 1.0);
+        else if (rho > 0.0 && r > 0.0) n = vec3(q.xy / rho, -k);
+        else n = vec3(0.0, 0.0, k > 0.0 ? -1.0 : 1.0);
+    } else if (kind == TORUS) {
+        // Away from the nearest point of the ring circle.
+        float rho = length(q.xy);
+        vec2 around = rho > 0.0 ? q.xy / rho : vec2(1.0, 0.0);
+        vec3 v = q - vec3(T(L).y * around, 0.0);
+        n = dot(v, v) > 0.0 ? v : vec3(around, 0.0);
     } else {
         vec3 lo = T(L + 4).xyz, hi = T(L + 5).xyz;
         vec3 c = (q - 0.5 * (lo + hi)) / max(0.5 * (hi - lo), vec3(1e-30));

@@ -46,13 +46,11 @@ class AlignmentTest {
     }
 
     /**
-     * Every example scene the live view can draw (the second wave's shapes, such as
-     * scenes/shapes.crt's tori and meshes, are refused by the converter with a message, not drawn),
-     * and the CSG cases.
+     * Every example scene and the CSG cases; a scene holding a kind the live view does not draw yet
+     * (SceneConverterTest.NOT_DRAWN_YET) must be refused with a sentence naming it.
      */
     static Stream<Path> scenes() throws IOException {
-        Stream<Path> examples = Files.list(Path.of("scenes")).filter(p -> p.toString().endsWith(".crt")).sorted()
-                .filter(AlignmentTest::drawable);
+        Stream<Path> examples = Files.list(Path.of("scenes")).filter(p -> p.toString().endsWith(".crt")).sorted();
         Stream<Path> csg = Files.list(Path.of("src/test/resources/dev/crt/live"))
                 .filter(p -> p.toString().endsWith(".crt")).sorted();
         return Stream.concat(examples, csg);
@@ -162,17 +160,6 @@ class AlignmentTest {
             }
         }
         return false;
-    }
-
-    private static boolean drawable(Path file) {
-        try {
-            SceneConverter.convert(compile(file));
-            return true;
-        } catch (UnsupportedSceneException e) {
-            return false;
-        } catch (IOException e) {
-            throw new java.io.UncheckedIOException(e);
-        }
     }
 
     static Scene compile(Path file) throws IOException {
