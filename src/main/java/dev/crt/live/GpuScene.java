@@ -55,10 +55,15 @@ public final class GpuScene {
     final double gamma;
     final Camera camera;
     final Aabb bounds;
+    /**
+     * The primitive kinds present, one bit per kind: the shaders compile the cone and torus code
+     * only for scenes that have them (llvmpipe pays for every branch on every pixel).
+     */
+    final int kinds;
 
     GpuScene(float[] data, int texels, int[] entityOffset, Aabb[] entityBounds, int[] boundedOffsets,
             float[] boundedBoxes, int boundedPrimitives, int[] unboundedOffsets, float[] lights, int lightCount, Background background,
-            double gamma, Camera camera, Aabb bounds) {
+            double gamma, Camera camera, Aabb bounds, int kinds) {
         this.data = data;
         this.texels = texels;
         this.entityOffset = entityOffset;
@@ -73,6 +78,7 @@ public final class GpuScene {
         this.gamma = gamma;
         this.camera = camera;
         this.bounds = bounds;
+        this.kinds = kinds;
     }
 
     /** Number of top-level entities. */
