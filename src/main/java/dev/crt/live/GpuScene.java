@@ -14,9 +14,8 @@ import dev.crt.scene.Camera;
  * texel per program step (opcode, leaf, 0, 0) in postfix order, then {@link #LEAF_TEXELS} texels
  * per primitive: (kind, parameters), three rows of the world-to-local matrix (a plane keeps its
  * world normal and offset in the first), local box min and max (a cone: its length, then 0),
- * (colour, diffuse),
- * (specular, shininess, transparency, reflectivity), (emission, 0). Parameters: a cone's
- * (r0, r1, capped), a torus's (major, minor, 0), zeros otherwise.
+ * (colour, diffuse), (specular, shininess, transparency, reflectivity), (emission, 0).
+ * Parameters: a cone's (r0, r1, capped), a torus's (major, minor, 0), zeros otherwise.
  */
 public final class GpuScene {
     public static final int HEADER_TEXELS = 3;
