@@ -14,9 +14,8 @@ import dev.crt.scene.Camera;
  * texel per program step (opcode, leaf, 0, 0) in postfix order, then {@link #LEAF_TEXELS} texels
  * per primitive: (kind, parameters), three rows of the world-to-local matrix (a plane keeps its
  * world normal and offset in the first), local box min and max (a cone: its length, then 0),
- * (colour, diffuse),
- * (specular, shininess, transparency, reflectivity), (emission, 0). Parameters: a cone's
- * (r0, r1, capped), a torus's (major, minor, 0), zeros otherwise.
+ * (colour, diffuse), (specular, shininess, transparency, reflectivity), (emission, 0).
+ * Parameters: a cone's (r0, r1, capped), a torus's (major, minor, 0), zeros otherwise.
  */
 public final class GpuScene {
     public static final int HEADER_TEXELS = 3;
@@ -55,10 +54,15 @@ public final class GpuScene {
     final double gamma;
     final Camera camera;
     final Aabb bounds;
+    /**
+     * The primitive kinds present, one bit per kind: the shaders compile the cone and torus code
+     * only for scenes that have them (llvmpipe pays for every branch on every pixel).
+     */
+    final int kinds;
 
     GpuScene(float[] data, int texels, int[] entityOffset, Aabb[] entityBounds, int[] boundedOffsets,
             float[] boundedBoxes, int boundedPrimitives, int[] unboundedOffsets, float[] lights, int lightCount, Background background,
-            double gamma, Camera camera, Aabb bounds) {
+            double gamma, Camera camera, Aabb bounds, int kinds) {
         this.data = data;
         this.texels = texels;
         this.entityOffset = entityOffset;
@@ -73,6 +77,7 @@ public final class GpuScene {
         this.gamma = gamma;
         this.camera = camera;
         this.bounds = bounds;
+        this.kinds = kinds;
     }
 
     /** Number of top-level entities. */

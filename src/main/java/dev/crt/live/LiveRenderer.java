@@ -32,7 +32,8 @@ public final class LiveRenderer implements AutoCloseable {
     public static final int SHADOW_LIGHTS = 4;
 
     /** Geometry programs for one-primitive entities and for CSG entities, compiled when first needed. */
-    private int primitiveProgram, entityProgram;
+    /** Geometry programs by their defines (one-primitive or CSG, the primitive kinds compiled in). */
+    private final java.util.Map<String, Integer> geometryPrograms = new java.util.HashMap<>();
     /**
      * Shading and background programs by their variant (background kind, grid, shadows), compiled
      * when first needed: llvmpipe runs every branch for every pixel, so what a frame does not use
@@ -93,19 +94,18 @@ public final class LiveRenderer implements AutoCloseable {
         check("creating the renderer");
     }
 
-    private static String header(int backgroundKind) {
-        return "#version 330 core\n#define BACKGROUND_KIND " + backgroundKind + "\n";
+    /** The shaders' defines: the background kind, and the cone and torus code only where the scene has them. */
+    private String header(int backgroundKind) {
+        return "#version 330 core\n#define BACKGROUND_KIND " + backgroundKind + "\n"
+                + ((scene.kinds & 1 << GpuScene.CONE) != 0 ? "#define HAS_CONE\n" : "")
+                + ((scene.kinds & 1 << GpuScene.TORUS) != 0 ? "#define HAS_TORUS\n" : "");
     }
 
     /** The geometry program for one-primitive entities ({@code primitives}) or for CSG entities. */
     private int geometryProgram(boolean primitives) {
-        if (primitives && primitiveProgram == 0) {
-            primitiveProgram = program(resource("entity.vert"), header(0) + "#define PRIMITIVES\n" + common
-                    + resource("entity.frag"));
-        } else if (!primitives && entityProgram == 0) {
-            entityProgram = program(resource("entity.vert"), header(0) + common + resource("entity.frag"));
-        }
-        return primitives ? primitiveProgram : entityProgram;
+        String defines = header(0) + (primitives ? "#define PRIMITIVES\n" : "");
+        return geometryPrograms.computeIfAbsent(defines,
+                d -> program(resource("entity.vert"), d + common + resource("entity.frag")));
     }
 
     private int shadeProgram(int kind, boolean background, boolean grid, boolean shadows) {
@@ -552,8 +552,7 @@ public final class LiveRenderer implements AutoCloseable {
         glDeleteTextures(new int[] {sceneTexture, directoryTexture, panoramaTexture});
         glDeleteBuffers(new int[] {sceneBuffer, directoryBuffer, cubeVbo, instanceVbo, csgInstanceVbo, fullInstanceVbo});
         glDeleteVertexArrays(new int[] {cubeVao, csgVao, fullVao});
-        if (entityProgram != 0) glDeleteProgram(entityProgram);
-        if (primitiveProgram != 0) glDeleteProgram(primitiveProgram);
+        for (int p : geometryPrograms.values()) glDeleteProgram(p);
         for (int p : shadePrograms.values()) glDeleteProgram(p);
     }
 

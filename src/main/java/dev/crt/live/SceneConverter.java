@@ -31,6 +31,8 @@ import java.util.List;
 public final class SceneConverter {
     private float[] data = new float[4096];
     private int size;
+    /** The primitive kinds written, one bit per kind. */
+    private int kinds;
 
     /** Converts {@code scene}; throws {@link UnsupportedSceneException} for what the live view cannot draw. */
     public static GpuScene convert(Scene scene) {
@@ -80,7 +82,7 @@ public final class SceneConverter {
             System.arraycopy(boxes, 6 * (n - nc + k), boxesAll, 6 * (nb + k), 6);
         }
         return new GpuScene(data, size / 4, offsets, bounds, boundedAll, boxesAll, nb, Arrays.copyOf(unbounded, nu), lights, sceneLights.size(),
-                scene.settings().background(), scene.settings().gamma(), scene.settings().camera(), all);
+                scene.settings().background(), scene.settings().gamma(), scene.settings().camera(), all, kinds);
     }
 
     private static void put(float[] boxes, int at, Aabb b) {
@@ -264,6 +266,7 @@ public final class SceneConverter {
         if (!(length > 0) || !(r0 > 0 || r1 > 0)) return empty(m);
         Vec3[] axes = Transform.axes(w.div(length));
         Transform local = Transform.frame(axes[0], axes[1], w, from).then(t);
+        kinds |= 1 << GpuScene.CONE;
         texel(GpuScene.CONE, r0, r1, capped ? 1 : 0);
         matrix(local.inverseMatrix());
         texel(length, 0, 0, 0);
@@ -279,6 +282,7 @@ public final class SceneConverter {
         if (!(length > 0) || !(tr.major() > 0) || !(tr.minor() > 0)) return empty(tr.material());
         Vec3[] axes = Transform.axes(tr.axis().div(length));
         Transform local = Transform.frame(axes[0], axes[1], axes[2], tr.center()).then(t);
+        kinds |= 1 << GpuScene.TORUS;
         texel(GpuScene.TORUS, tr.major(), tr.minor(), 0);
         matrix(local.inverseMatrix());
         zeros(2);

@@ -5,21 +5,33 @@ uniform samplerBuffer scene;
 
 const int SPHERE = 0, BOX = 1, PLANE = 2, EMPTY = 3, CONE = 4, TORUS = 5;
 const int LEAF_TEXELS = 9;
-// Two per primitive, four for a torus (two intervals).
+// Two per primitive, four for a torus (two intervals). HAS_CONE and HAS_TORUS compile those kinds
+// in only for scenes that have them: llvmpipe pays for every branch on every pixel.
+#ifdef HAS_TORUS
 const int MAX_EVENTS = 128;
+#else
+const int MAX_EVENTS = 64;
+#endif
 
 float evT[MAX_EVENTS];
 int evL[MAX_EVENTS];
+#ifdef HAS_TORUS
 // A torus's second interval along the ray (leafSpan returns the first); INF when there is none.
 float span2A, span2B;
+#endif
 
 vec4 T(int i) { return texelFetch(scene, i); }
 
 // The first hit after tMin of one primitive from its spans.
 float firstAfter(float a, float b, float tMin) {
+#ifdef HAS_TORUS
     return a > tMin ? a : b > tMin ? b : span2A > tMin ? span2A : span2B;
+#else
+    return a > tMin ? a : b;
+#endif
 }
 
+#ifdef HAS_TORUS
 // The quartic s^4 + c2 s^2 + c1 s + c0 and its derivative, Horner's way.
 float quartic(float s, vec3 c) { return ((s * s + c.x) * s + c.y) * s + c.z; }
 float quarticSlope(float s, vec3 c) { return (4.0 * s * s + 2.0 * c.x) * s + c.y; }
@@ -111,6 +123,9 @@ bool torusSpan(vec4 hd, vec3 o, vec3 d, out float a, out float b) {
     return spans > 0;
 }
 
+#endif
+
+#ifdef HAS_CONE
 // Cylinders, cones and frusta in a frame where the axis runs from z = 0 to z = 1 and x, y are in
 // scene units: the side x^2 + y^2 = R(z)^2, R(z) = r0 + (r1 - r0) z, within the slab, the caps
 // when capped; an open tube gives its crossings (two as an interval, one as an unbounded one).
@@ -196,9 +211,13 @@ bool coneSpan(vec4 hd, vec3 o, vec3 d, out float a, out float b) {
     return true;
 }
 
+#endif
+
 bool leafSpan(int L, vec3 ro, vec3 rd, out float a, out float b) {
+#ifdef HAS_TORUS
     span2A = INF;
     span2B = INF;
+#endif
     vec4 hd = T(L);
     int kind = int(hd.x);
     if (kind == PLANE) {
@@ -213,8 +232,12 @@ bool leafSpan(int L, vec3 ro, vec3 rd, out float a, out float b) {
     vec4 r0 = T(L + 1), r1 = T(L + 2), r2 = T(L + 3);
     vec3 o = vec3(dot(r0.xyz, ro) + r0.w, dot(r1.xyz, ro) + r1.w, dot(r2.xyz, ro) + r2.w);
     vec3 d = vec3(dot(r0.xyz, rd), dot(r1.xyz, rd), dot(r2.xyz, rd));
+#ifdef HAS_CONE
     if (kind == CONE) return coneSpan(hd, o, d, a, b);
+#endif
+#ifdef HAS_TORUS
     if (kind == TORUS) return torusSpan(hd, o, d, a, b);
+#endif
     if (kind == SPHERE) {
         // The stable form: the discriminant from the closest approach, the small root from c/q.
         float aa = dot(d, d), bb = dot(o, d);
@@ -258,6 +281,19 @@ bool inside(int program, int steps, uint mask) {
 
 // First boundary of the entity at o with tMin < t < tMax (transmittance = false: returns 1 on a hit
 // and fills tHit, leafHit), or the product of the transparencies of all boundaries crossed there.
+// Leaf k's interval (a, b) as events after tMin, or as inside at tMin.
+void event(int k, float a, float b, float tMin, inout uint mask, inout int n) {
+    if (a <= tMin) {
+        if (b > tMin) {
+            mask |= 1u << uint(k);
+            if (b != INF) { evT[n] = b; evL[n] = k; n++; }
+        }
+    } else {
+        evT[n] = a; evL[n] = k; n++;
+        if (b != INF) { evT[n] = b; evL[n] = k; n++; }
+    }
+}
+
 float walk(int o, vec3 ro, vec3 rd, float tMin, float tMax, bool transmittance, out float tHit, out int leafHit) {
     vec4 h = T(o);
     int leaves = int(h.x), steps = int(h.y);
@@ -278,22 +314,10 @@ float walk(int o, vec3 ro, vec3 rd, float tMin, float tMax, bool transmittance, 
     for (int k = 0; k < leaves; k++) {
         float a, b;
         if (!leafSpan(first + k * LEAF_TEXELS, ro, rd, a, b)) continue;
-        for (int part = 0; part < 2; part++) {
-            if (part == 1) {
-                if (span2A == INF) break;
-                a = span2A;
-                b = span2B;
-            }
-            if (a <= tMin) {
-                if (b > tMin) {
-                    mask |= 1u << uint(k);
-                    if (b != INF) { evT[n] = b; evL[n] = k; n++; }
-                }
-            } else {
-                evT[n] = a; evL[n] = k; n++;
-                if (b != INF) { evT[n] = b; evL[n] = k; n++; }
-            }
-        }
+        event(k, a, b, tMin, mask, n);
+#ifdef HAS_TORUS
+        if (span2A != INF) event(k, span2A, span2B, tMin, mask, n);
+#endif
     }
     for (int i = 1; i < n; i++) {
         float t = evT[i];
@@ -337,6 +361,7 @@ vec3 normalAt(int L, vec3 p) {
     vec3 n;
     if (kind == SPHERE) {
         n = q;
+#ifdef HAS_CONE
     } else if (kind == CONE) {
         // The cap or the side, whichever the point lies closer to (in scene units: the frame's z is the length).
         vec4 hd = T(L);
@@ -345,12 +370,15 @@ vec3 normalAt(int L, vec3 p) {
         if (hd.w != 0.0 && capDistance < abs(rho - r)) n = vec3(0.0, 0.0, q.z < 0.5 ? -1.0 : 1.0);
         else if (rho > 0.0 && r > 0.0) n = vec3(q.xy / rho, -k);
         else n = vec3(0.0, 0.0, k > 0.0 ? -1.0 : 1.0);
+#endif
+#ifdef HAS_TORUS
     } else if (kind == TORUS) {
         // Away from the nearest point of the ring circle.
         float rho = length(q.xy);
         vec2 around = rho > 0.0 ? q.xy / rho : vec2(1.0, 0.0);
         vec3 v = q - vec3(T(L).y * around, 0.0);
         n = dot(v, v) > 0.0 ? v : vec3(around, 0.0);
+#endif
     } else {
         vec3 lo = T(L + 4).xyz, hi = T(L + 5).xyz;
         vec3 c = (q - 0.5 * (lo + hi)) / max(0.5 * (hi - lo), vec3(1e-30));
