@@ -28,7 +28,7 @@ import net.jqwik.api.constraints.IntRange;
  * along the ray with the entity's inside test, refined by bisection. Rays are random, aimed, far
  * away (1e5), starting inside, and grazing or tangent.
  */
-class IntersectionProperties {
+class IntersectionPropertiesTest {
     private static final Material M = matte(rgb(0.5, 0.5, 0.5));
     /** A closed, non-convex triangle mesh: a line crosses it up to four times. */
     private static final dev.crt.scene.MeshData MESH_TORUS = Meshes.torus(1, 0.45, 8, 5);
