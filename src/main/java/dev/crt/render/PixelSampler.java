@@ -14,7 +14,7 @@ import java.util.function.BooleanSupplier;
 final class PixelSampler {
     /** The adaptive sampler's first pass takes this many samples per pixel (or its whole budget, if smaller). */
     static final int PILOT = 4;
-    /** The Sobol samplers ask whether to stop once every this many + 1 samples. */
+    /** The Sobol samplers ask whether to stop once every STOP_RUN + 1 = 64 samples. */
     private static final int STOP_RUN = 63;
 
     private final Tracer tracer;
