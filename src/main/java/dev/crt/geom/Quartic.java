@@ -158,34 +158,27 @@ public final class Quartic {
 
     /** The root of the cubic in [a, b], where it changes sign (fa = its value at a), to full precision. */
     private static double refineCubic(double c2, double c1, double a, double b, double fa) {
-        double x = 0.5 * (a + b);
-        for (int i = 0; i < 200; i++) {
-            double f = cubic(c2, c1, x);
-            if (f == 0) return x;
-            if ((f < 0) == (fa < 0)) a = x;
-            else b = x;
-            double d = 12 * x * x + 2 * c2;
-            double next = x - f / d;
-            // Newton closes on a root from one side, so the bracket alone shrinks slowly: a
-            // step of an ulp or two is convergence, whether or not it lands inside the bracket
-            // (x itself is then one of its ends).
-            if (Math.abs(next - x) <= 2 * Math.ulp(x)) return x;
-            if (!(next > a && next < b) || Math.abs(next - x) > 0.5 * (b - a)) next = 0.5 * (a + b);
-            if (b - a <= 2 * Math.ulp(Math.max(Math.abs(a), Math.abs(b)))) return next;
-            x = next;
-        }
-        return x;
+        return refine(c2, c1, 0, a, b, fa, false);
     }
 
     /** The root of the quartic in [a, b], where it changes sign (fa = its value at a), to full precision. */
     private static double refineQuartic(double c2, double c1, double c0, double a, double b, double fa) {
+        return refine(c2, c1, c0, a, b, fa, true);
+    }
+
+    /**
+     * Safeguarded Newton on the depressed quartic ({@code quartic}) or on its derivative, the cubic
+     * 4x³ + 2c2·x + c1: Newton steps while they stay inside the shrinking sign-change bracket
+     * [a, b] and halve it at least, bisection otherwise.
+     */
+    private static double refine(double c2, double c1, double c0, double a, double b, double fa, boolean quartic) {
         double x = 0.5 * (a + b);
         for (int i = 0; i < 200; i++) {
-            double f = quartic(c2, c1, c0, x);
+            double f = quartic ? quartic(c2, c1, c0, x) : cubic(c2, c1, x);
             if (f == 0) return x;
             if ((f < 0) == (fa < 0)) a = x;
             else b = x;
-            double d = cubic(c2, c1, x);
+            double d = quartic ? cubic(c2, c1, x) : 12 * x * x + 2 * c2;
             double next = x - f / d;
             // Newton closes on a root from one side, so the bracket alone shrinks slowly: a
             // step of an ulp or two is convergence, whether or not it lands inside the bracket

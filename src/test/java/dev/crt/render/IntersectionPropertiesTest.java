@@ -33,14 +33,6 @@ class IntersectionPropertiesTest {
     /** A closed, non-convex triangle mesh: a line crosses it up to four times. */
     private static final dev.crt.scene.MeshData MESH_TORUS = Meshes.torus(1, 0.45, 8, 5);
 
-    private static Vec3 unit(SplittableRandom r) {
-        while (true) {
-            Vec3 v = new Vec3(r.nextDouble() * 2 - 1, r.nextDouble() * 2 - 1, r.nextDouble() * 2 - 1);
-            double l = v.length();
-            if (l > 0.1 && l <= 1) return v.div(l);
-        }
-    }
-
     @Property(tries = 3000)
     void sphereSpanMatchesTheDistanceFromTheCentreToTheLine(@ForAll long seed) {
         SplittableRandom r = new SplittableRandom(seed);

@@ -27,6 +27,15 @@ final class Scenes {
 
     static Vec3 v(double x, double y, double z) { return new Vec3(x, y, z); }
 
+    /** A uniformly random unit vector (rejection sampling in the unit ball, away from its centre). */
+    static Vec3 unit(java.util.SplittableRandom r) {
+        while (true) {
+            Vec3 v = new Vec3(r.nextDouble() * 2 - 1, r.nextDouble() * 2 - 1, r.nextDouble() * 2 - 1);
+            double l = v.length();
+            if (l > 0.1 && l <= 1) return v.div(l);
+        }
+    }
+
     static Rgb rgb(double r, double g, double b) { return new Rgb(r, g, b); }
 
     static Material matte(Rgb c) { return new Material(c, 1, 0, 30, 0, 0, 1, Rgb.BLACK); }

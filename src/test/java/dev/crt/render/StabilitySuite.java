@@ -60,14 +60,6 @@ class StabilitySuite {
         System.out.print(b);
     }
 
-    private static Vec3 unit(SplittableRandom r) {
-        while (true) {
-            Vec3 v = new Vec3(r.nextDouble() * 2 - 1, r.nextDouble() * 2 - 1, r.nextDouble() * 2 - 1);
-            double l = v.length();
-            if (l > 0.1 && l <= 1) return v.div(l);
-        }
-    }
-
     private static BigDecimal big(double x) { return new BigDecimal(x); }
 
     /**

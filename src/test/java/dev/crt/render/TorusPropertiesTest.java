@@ -23,14 +23,6 @@ import net.jqwik.api.Property;
 class TorusPropertiesTest {
     private static final Material M = matte(rgb(0.5, 0.5, 0.5));
 
-    private static Vec3 unit(SplittableRandom r) {
-        while (true) {
-            Vec3 v = new Vec3(r.nextDouble() * 2 - 1, r.nextDouble() * 2 - 1, r.nextDouble() * 2 - 1);
-            double l = v.length();
-            if (l > 0.1 && l <= 1) return v.div(l);
-        }
-    }
-
     @Property(tries = 4000)
     void raysAcrossTheAxisMatchTheAnnulusAtTheirHeight(@ForAll long seed) {
         SplittableRandom r = new SplittableRandom(seed);
