@@ -341,7 +341,7 @@ class StudioGuiTest {
                 .withTimeout(10_000).using(robot);
         question.requireMessage(java.util.regex.Pattern.compile("(?s).*two-spheres\\.crt was changed by another program.*"));
         question.yesButton().click();
-        waitFor("the new text in the editor", 5, () -> area().getText().equals(changed));
+        waitFor("the new text in the editor", 20, () -> area().getText().equals(changed));
         assertThat(onEdt(() -> document().isModified())).isFalse();
     }
 
