@@ -95,7 +95,7 @@ final class AnimationRun {
             long compileNanos = System.nanoTime() - compileStart;
             report(frame, result);
             if (result.hasErrors()) {
-                fail(new Failure(frame.number(), ExitCode.SCRIPT_ERROR, "the script has errors at t = " + frame.number()));
+                fail(new Failure(frame.number(), ExitCode.ofErrors(result), "the script has errors at t = " + frame.number()));
                 return;
             }
             Scene scene = commandLineSettings.apply(result.scene());
