@@ -39,6 +39,7 @@ public final class Renderer {
         entities = scene.entities();
         geometry = new SceneGeometry(scene.entities());
         lights = new Lights(settings.lights());
+        geometry.materials.prepare(settings.outputGamma());
         background = new BackgroundShader(settings.effectiveBackground(), settings.outputGamma(),
                 settings.shading() == Shading.ORIGINAL);
         buildNanos = System.nanoTime() - start;

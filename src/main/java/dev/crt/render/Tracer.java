@@ -51,6 +51,13 @@ final class Tracer {
     final PixelRandom lightRandom = new PixelRandom();
     /** Keeps the lights' stream apart from the pixel sampler's, which is seeded from the same pixel. */
     private static final long LIGHT_STREAM = 0x4c69676874734c6cL;
+    /** Whether some material has a texture: only then do rays carry a footprint (a ray cone). */
+    final boolean footprints;
+    /** The ray cone's spread (radians) of the current camera ray, set by the pixel sampler when {@link #footprints}. */
+    double spread;
+    /** The length of the ray path from the camera to the current ray's origin: the cone's width there is spread × it. */
+    private double travelled;
+    private final TextureShading textured;
     /** Whether some material absorbs (Beer's law): only then do rays and shadow rays track distances inside solids. */
     final boolean absorbing;
     /** The optical depth a·s per channel gathered by the current shadow ray. */
@@ -76,6 +83,8 @@ final class Tracer {
         java.util.Arrays.fill(lastOccluder, NONE);
         walker = new BvhWalker(bvh == null ? 1 : bvh.depth + 2);
         absorbing = geometry.materials.absorbing();
+        footprints = !geometry.materials.textures.isEmpty();
+        textured = footprints ? new TextureShading(shapes, materials, geometry.materials.prepared()) : null;
         phong = new PhongShading(this, materials, lights);
     }
 
@@ -124,37 +133,52 @@ final class Tracer {
         }
         double kt = mat[m + Materials.TRANSPARENCY];
         double kr = mat[m + Materials.REFLECTIVITY];
+        double ks = mat[m + Materials.SPECULAR];
+        double cr = mat[m + Materials.R], cg = mat[m + Materials.G], cb = mat[m + Materials.B];
+        double er = mat[m + Materials.ER], eg = mat[m + Materials.EG], eb = mat[m + Materials.EB];
+        double start = travelled;
+        if (mat[m + Materials.TEXTURED] != 0) {
+            TextureShading ts = textured;
+            ts.shade(s, hit.face, m, surface, gx, gy, gz, snx, sny, snz, spread * (start + hit.t), delta);
+            kt = ts.kt;
+            kr = ts.kr;
+            ks = ts.ks;
+            cr = ts.cr;
+            cg = ts.cg;
+            cb = ts.cb;
+            er = ts.er;
+            eg = ts.eg;
+            eb = ts.eb;
+            snx = ts.snx;
+            sny = ts.sny;
+            snz = ts.snz;
+        }
         double local = 1 - kt;
         if (local != 0) {
-            double cr = mat[m + Materials.R], cg = mat[m + Materials.G], cb = mat[m + Materials.B];
-            if (mat[m + Materials.TEXTURE] != Materials.PLAIN) {
-                // Just inside the solid (against the outward normal g), so a face on a cell boundary takes the inside cell.
-                int t = s * 12;
-                double[] e = shapes.toEntity;
-                double qx = px - delta * gx, qy = py - delta * gy, qz = pz - delta * gz;
-                double ex = e[t] * qx + e[t + 1] * qy + e[t + 2] * qz + e[t + 3];
-                double ey = e[t + 4] * qx + e[t + 5] * qy + e[t + 6] * qz + e[t + 7];
-                double ez = e[t + 8] * qx + e[t + 9] * qy + e[t + 10] * qz + e[t + 11];
-                double k = mat[m + Materials.TSCALE];
-                boolean even = ((long) Math.floor(ex / k) + (long) Math.floor(ey / k) + (long) Math.floor(ez / k) & 1) == 0;
-                int c = m + (even ? Materials.T1R : Materials.T2R);
-                cr = mat[c];
-                cg = mat[c + 1];
-                cb = mat[c + 2];
-            }
             // On smooth meshes the lights are looked at from the shading point and along the shading
             // normal; shadow rays still leave along the geometric normal.
             if (surface.shaded) {
-                phong.shade(m, cr, cg, cb, surface.lx, surface.ly, surface.lz, nx, ny, nz, snx, sny, snz, -dx, -dy, -dz, delta,
-                        colour);
+                phong.shade(m, cr, cg, cb, ks, er, eg, eb, surface.lx, surface.ly, surface.lz, nx, ny, nz, snx, sny, snz,
+                        -dx, -dy, -dz, delta, colour);
             } else {
-                phong.shade(m, cr, cg, cb, px, py, pz, nx, ny, nz, nx, ny, nz, -dx, -dy, -dz, delta, colour);
+                phong.shade(m, cr, cg, cb, ks, er, eg, eb, px, py, pz, nx, ny, nz, snx, sny, snz, -dx, -dy, -dz, delta,
+                        colour);
             }
             accR += wr * local * colour[0];
             accG += wg * local * colour[1];
             accB += wb * local * colour[2];
         }
-        if (depth == 0) return;
+        if (depth == 0 || kr == 0 && kt == 0) return;
+        travelled = start + hit.t;
+        children(px, py, pz, dx, dy, dz, nx, ny, nz, snx, sny, snz, entering, delta, depth, m, kr, kt, wr, wg, wb);
+        travelled = start;
+    }
+
+    /** The reflected and refracted rays of a hit, weighted by kr and kt. */
+    private void children(double px, double py, double pz, double dx, double dy, double dz, double nx, double ny,
+            double nz, double snx, double sny, double snz, boolean entering, double delta, int depth, int m, double kr,
+            double kt, double wr, double wg, double wb) {
+        double[] mat = materials;
         // Mirror and refraction directions follow the shading normal; the offsets, the geometric one.
         double dDotN = dx * snx + dy * sny + dz * snz;
         double rdx = dx - 2 * dDotN * snx, rdy = dy - 2 * dDotN * sny, rdz = dz - 2 * dDotN * snz;
@@ -390,10 +414,26 @@ final class Tracer {
         }
         if (crossings == 0) return 1;
         int m = shapes.material[item] * Materials.STRIDE;
+        if (materials[m + Materials.TEX_TRANSPARENCY] != 0) return texturedTransmittance(item, m, tMax);
         double kt = materials[m + Materials.TRANSPARENCY];
         if (absorbing && kt != 0 && !span.surface) absorb(m, tMax);
         double product = kt;
         for (int k = 1; k < crossings; k++) product *= kt;
+        return product;
+    }
+
+    /** As {@link #itemTransmittance} for a material whose transparency is a texture: kt read at each crossing of {@link #span}. */
+    private double texturedTransmittance(int item, int m, double tMax) {
+        if (absorbing && !span.surface) absorb(m, tMax);
+        double product = 1;
+        // The crossings are read before transparencyAt reuses the ray's scratch.
+        for (int i = 0; i < span.count && product != 0; i++) {
+            double in = span.tIn[i], out = span.tOut[i];
+            int faceIn = span.faceIn[i], faceOut = span.faceOut[i];
+            boolean open = span.surface;
+            if (in > 0 && in < tMax) product *= textured.transparencyAt(item, faceIn, m, in, ray);
+            if (!open && out > 0 && out < tMax && product != 0) product *= textured.transparencyAt(item, faceOut, m, out, ray);
+        }
         return product;
     }
 }
