@@ -32,7 +32,7 @@ final class TextureShading {
     /**
      * Evaluates the channels of material m on shape s at {@code surface} (hit on {@code face}),
      * with outward geometric normal g, ray-facing shading normal sn, the ray's footprint
-     * {@code width} (world units) and the offset {@code delta}.
+     * {@code width} on the surface (world units) and the offset {@code delta}.
      */
     void shade(int s, int face, int m, SurfacePoint surface, double gx, double gy, double gz, double snx0, double sny0,
             double snz0, double width, double delta) {
@@ -120,7 +120,7 @@ final class TextureShading {
 
     /**
      * Tilts the shading normal by the gradient of the height h = bumpscale·luminance(texture),
-     * taken by finite differences one footprint (at least a millionth of the shape's size) along
+     * taken by finite differences one footprint (clamped to 10⁻⁶…10⁻² of the shape's size) along
      * the tangent frame T (dp/du made perpendicular to N) and B = N × T: N' = normalize(N − ∂h/∂T·T
      * − ∂h/∂B·B), with N the shading normal turned outward, then turned back to the ray's side.
      */
@@ -148,7 +148,7 @@ final class TextureShading {
         ty /= tl;
         tz /= tl;
         double bx = ny * tz - nz * ty, by = nz * tx - nx * tz, bz = nx * ty - ny * tx;
-        double eps = Math.max(width, 1e-6 * shapes.scale[s]);
+        double eps = Math.min(Math.max(width, 1e-6 * shapes.scale[s]), 1e-2 * shapes.scale[s]);
         TexturePoint p = point;
         baseX = p.x;
         baseY = p.y;

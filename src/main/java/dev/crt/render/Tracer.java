@@ -139,7 +139,9 @@ final class Tracer {
         double start = travelled;
         if (mat[m + Materials.TEXTURED] != 0) {
             TextureShading ts = textured;
-            ts.shade(s, hit.face, m, surface, gx, gy, gz, snx, sny, snz, spread * (start + hit.t), delta);
+            // The cone's width where it meets the surface, stretched by the slant (a grazing ray covers a long strip).
+            double width = spread * (start + hit.t) / Math.max(Math.abs(dn), 1e-9);
+            ts.shade(s, hit.face, m, surface, gx, gy, gz, snx, sny, snz, width, delta);
             kt = ts.kt;
             kr = ts.kr;
             ks = ts.ks;
