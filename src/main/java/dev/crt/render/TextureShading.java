@@ -72,7 +72,7 @@ final class TextureShading {
         if ((k = (int) a[m + Materials.TEX_SPECULAR]) != 0) ks = scalar(k);
         if ((k = (int) a[m + Materials.TEX_REFLECTIVITY]) != 0) kr = clamp(scalar(k));
         if ((k = (int) a[m + Materials.TEX_TRANSPARENCY]) != 0) kt = clamp(scalar(k));
-        if (bump) bump(s, (int) a[m + Materials.TEX_BUMP], a[m + Materials.BUMPSCALE], surface, gx, gy, gz, width);
+        if (bump) bump(s, (int) a[m + Materials.TEX_BUMP], a[m + Materials.BUMPSCALE], surface, gx, gy, gz, width, delta / Tracer.OFFSET);
     }
 
     /** The texture's luminance at the current point. */
@@ -120,11 +120,13 @@ final class TextureShading {
 
     /**
      * Tilts the shading normal by the gradient of the height h = bumpscale·luminance(texture),
-     * taken by finite differences one footprint (clamped to 10⁻⁶…10⁻² of the shape's size) along
+     * taken by central differences one footprint either side (clamped to 10⁻⁶…10⁻² of the larger of the
+     * point's coordinates and the shape's size) along
      * the tangent frame T (dp/du made perpendicular to N) and B = N × T: N' = normalize(N − ∂h/∂T·T
      * − ∂h/∂B·B), with N the shading normal turned outward, then turned back to the ray's side.
      */
-    private void bump(int s, int k, double scale, SurfacePoint surface, double gx, double gy, double gz, double width) {
+    private void bump(int s, int k, double scale, SurfacePoint surface, double gx, double gy, double gz, double width,
+            double size) {
         double sign = snx * gx + sny * gy + snz * gz < 0 ? -1 : 1;
         double nx = sign * snx, ny = sign * sny, nz = sign * snz;
         double ux = surface.dpdux, uy = surface.dpduy, uz = surface.dpduz;
@@ -148,22 +150,21 @@ final class TextureShading {
         ty /= tl;
         tz /= tl;
         double bx = ny * tz - nz * ty, by = nz * tx - nx * tz, bz = nx * ty - ny * tx;
-        double eps = Math.min(Math.max(width, 1e-6 * shapes.scale[s]), 1e-2 * shapes.scale[s]);
+        double eps = Math.min(width, 1e-2 * size);
+        if (!(eps > 1e-6 * size)) eps = size > 0 ? 1e-6 * size : 1e-6;
         TexturePoint p = point;
         baseX = p.x;
         baseY = p.y;
         baseZ = p.z;
         baseU = p.u;
         baseV = p.v;
-        double h0 = scale * scalar(k);
-        double hT = scale * probe(s, k, surface, tx, ty, tz, eps);
-        double hB = scale * probe(s, k, surface, bx, by, bz, eps);
+        double dT = scale * (probe(s, k, surface, tx, ty, tz, eps) - probe(s, k, surface, tx, ty, tz, -eps)) / (2 * eps);
+        double dB = scale * (probe(s, k, surface, bx, by, bz, eps) - probe(s, k, surface, bx, by, bz, -eps)) / (2 * eps);
         p.x = baseX;
         p.y = baseY;
         p.z = baseZ;
         p.u = baseU;
         p.v = baseV;
-        double dT = (hT - h0) / eps, dB = (hB - h0) / eps;
         double mx = nx - dT * tx - dB * bx, my = ny - dT * ty - dB * by, mz = nz - dT * tz - dB * bz;
         double inv = sign / Math.sqrt(mx * mx + my * my + mz * mz);
         snx = mx * inv;
