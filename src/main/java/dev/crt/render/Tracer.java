@@ -51,6 +51,13 @@ final class Tracer {
     final PixelRandom lightRandom = new PixelRandom();
     /** Keeps the lights' stream apart from the pixel sampler's, which is seeded from the same pixel. */
     private static final long LIGHT_STREAM = 0x4c69676874734c6cL;
+    /** Whether some material is glossy (roughness > 0): only then is the lobes' generator seeded. */
+    private final boolean glossy;
+    /** The generator of glossy lobe directions, seeded per pixel apart from the lights' stream. */
+    private final PixelRandom glossRandom = new PixelRandom();
+    private static final long GLOSS_STREAM = 0x476c6f7373794c62L;
+    /** Whether the current ray descends from a sampled lobe: lobes below it take one sample. */
+    private boolean insideLobe;
     /** Whether some material has a texture: only then do rays carry a footprint (a ray cone). */
     final boolean footprints;
     /** The ray cone's spread (radians) of the current camera ray, set by the pixel sampler when {@link #footprints}. */
@@ -84,6 +91,7 @@ final class Tracer {
         walker = new BvhWalker(bvh == null ? 1 : bvh.depth + 2);
         absorbing = geometry.materials.absorbing();
         footprints = !geometry.materials.textures.isEmpty();
+        glossy = geometry.materials.glossy();
         textured = footprints ? new TextureShading(shapes, materials, geometry.materials.prepared()) : null;
         phong = new PhongShading(this, materials, lights);
     }
@@ -181,29 +189,29 @@ final class Tracer {
             double nz, double snx, double sny, double snz, boolean entering, double delta, int depth, int m, double kr,
             double kt, double wr, double wg, double wb) {
         double[] mat = materials;
+        double rough = mat[m + Materials.ROUGHNESS];
+        int samples = (int) mat[m + Materials.GLOSSY_SAMPLES];
         // Mirror and refraction directions follow the shading normal; the offsets, the geometric one.
         double dDotN = dx * snx + dy * sny + dz * snz;
         double rdx = dx - 2 * dDotN * snx, rdy = dy - 2 * dDotN * sny, rdz = dz - 2 * dDotN * snz;
         if (kt > 0 && mat[m + Materials.FRESNEL] != 0) {
             fresnel(px, py, pz, dx, dy, dz, nx, ny, nz, snx, sny, snz, rdx, rdy, rdz, entering, delta, depth, kr, kt,
-                    mat[m + Materials.IOR], wr, wg, wb);
+                    mat[m + Materials.IOR], rough, samples, wr, wg, wb);
             return;
         }
         if (kr > 0) {
-            reflectedRays++;
-            trace(px + delta * nx, py + delta * ny, pz + delta * nz, rdx, rdy, rdz, depth - 1, wr * kr, wg * kr, wb * kr);
+            spawn(px, py, pz, rdx, rdy, rdz, nx, ny, nz, delta, depth, rough, samples, wr * kr, wg * kr, wb * kr);
         }
         if (kt > 0) {
-            refractedRays++;
             double eta = entering ? 1 / mat[m + Materials.IOR] : mat[m + Materials.IOR];
             double cosI = -dDotN;
             double k = 1 - eta * eta * (1 - cosI * cosI);
             if (k < 0) {
-                trace(px + delta * nx, py + delta * ny, pz + delta * nz, rdx, rdy, rdz, depth - 1, wr * kt, wg * kt, wb * kt);
+                spawn(px, py, pz, rdx, rdy, rdz, nx, ny, nz, delta, depth, rough, samples, wr * kt, wg * kt, wb * kt);
             } else {
                 double c = eta * cosI - Math.sqrt(k);
-                trace(px - delta * nx, py - delta * ny, pz - delta * nz,
-                        eta * dx + c * snx, eta * dy + c * sny, eta * dz + c * snz, depth - 1, wr * kt, wg * kt, wb * kt);
+                spawn(px, py, pz, eta * dx + c * snx, eta * dy + c * sny, eta * dz + c * snz, nx, ny, nz, -delta, depth, rough,
+                        samples, wr * kt, wg * kt, wb * kt);
             }
         }
     }
@@ -216,7 +224,7 @@ final class Tracer {
      */
     private void fresnel(double px, double py, double pz, double dx, double dy, double dz, double nx, double ny, double nz,
             double sx, double sy, double sz, double rdx, double rdy, double rdz, boolean entering, double delta, int depth,
-            double kr, double kt, double ior, double wr, double wg, double wb) {
+            double kr, double kt, double ior, double rough, int samples, double wr, double wg, double wb) {
         double eta = entering ? 1 / ior : ior;
         double cosI = -(dx * sx + dy * sy + dz * sz);
         double k = 1 - eta * eta * (1 - cosI * cosI);
@@ -224,16 +232,73 @@ final class Tracer {
         double fr = k < 0 ? 1 : Fresnel.reflectance(cosI, cosT, eta);
         double reflect = kr + kt * fr, refract = kt * (1 - fr);
         if (reflect > 0) {
-            reflectedRays++;
-            trace(px + delta * nx, py + delta * ny, pz + delta * nz, rdx, rdy, rdz, depth - 1,
-                    wr * reflect, wg * reflect, wb * reflect);
+            spawn(px, py, pz, rdx, rdy, rdz, nx, ny, nz, delta, depth, rough, samples, wr * reflect, wg * reflect, wb * reflect);
         }
         if (refract > 0) {
-            refractedRays++;
             double c = eta * cosI - cosT;
-            trace(px - delta * nx, py - delta * ny, pz - delta * nz, eta * dx + c * sx, eta * dy + c * sy, eta * dz + c * sz,
-                    depth - 1, wr * refract, wg * refract, wb * refract);
+            spawn(px, py, pz, eta * dx + c * sx, eta * dy + c * sy, eta * dz + c * sz, nx, ny, nz, -delta, depth, rough, samples,
+                    wr * refract, wg * refract, wb * refract);
         }
+    }
+
+    /**
+     * Traces the secondary ray leaving p along r on the side {@code side} of the ray-facing
+     * geometric normal n (side = +delta: reflected, −delta: refracted). With roughness ρ > 0 it is
+     * spread over a lobe instead: {@code samples} directions (one inside a lobe already being
+     * sampled, so cost grows linearly with depth, not exponentially) drawn uniformly from the cone of
+     * half-angle ρ·90° about r, stratified in cos θ, each turned back across the tangent plane when it
+     * points to the wrong side, each weighted 1/samples.
+     */
+    private void spawn(double px, double py, double pz, double rx, double ry, double rz, double nx, double ny, double nz,
+            double side, int depth, double rough, int samples, double wr, double wg, double wb) {
+        if (side > 0) reflectedRays++;
+        else refractedRays++;
+        double ox = px + side * nx, oy = py + side * ny, oz = pz + side * nz;
+        if (rough == 0) {
+            trace(ox, oy, oz, rx, ry, rz, depth - 1, wr, wg, wb);
+            return;
+        }
+        int n = insideLobe ? 1 : samples;
+        boolean outer = !insideLobe;
+        insideLobe = true;
+        // An orthonormal frame (a, b, r) about the lobe's axis.
+        double ax, ay, az;
+        if (Math.abs(rx) < 0.9) {
+            ax = 0;
+            ay = rz;
+            az = -ry;
+        } else {
+            ax = -rz;
+            ay = 0;
+            az = rx;
+        }
+        double al = Math.sqrt(ax * ax + ay * ay + az * az);
+        ax /= al;
+        ay /= al;
+        az /= al;
+        double bx = ry * az - rz * ay, by = rz * ax - rx * az, bz = rx * ay - ry * ax;
+        double cosMax = Math.cos(rough * Math.PI / 2);
+        double w = 1.0 / n;
+        double sign = side > 0 ? 1 : -1;
+        for (int k = 0; k < n; k++) {
+            if (k > 0) {
+                if (side > 0) reflectedRays++;
+                else refractedRays++;
+            }
+            double cos = 1 - (k + glossRandom.next()) / n * (1 - cosMax);
+            double sin = Math.sqrt(Math.max(0, 1 - cos * cos));
+            double phi = 2 * Math.PI * glossRandom.next();
+            double ca = sin * Math.cos(phi), cb = sin * Math.sin(phi);
+            double gx = ca * ax + cb * bx + cos * rx, gy = ca * ay + cb * by + cos * ry, gz = ca * az + cb * bz + cos * rz;
+            double across = sign * (gx * nx + gy * ny + gz * nz);
+            if (across < 0) {
+                gx -= 2 * sign * across * nx;
+                gy -= 2 * sign * across * ny;
+                gz -= 2 * sign * across * nz;
+            }
+            trace(ox, oy, oz, gx, gy, gz, depth - 1, wr * w, wg * w, wb * w);
+        }
+        if (outer) insideLobe = false;
     }
 
     /**
@@ -280,6 +345,7 @@ final class Tracer {
     /** Seeds the light generator for pixel (i, j) and pass {@code pass}, when some light needs one. */
     void startPixel(int i, int j, long seed, int pass) {
         if (lights.random) lightRandom.seed(i, j, seed ^ (LIGHT_STREAM + pass));
+        if (glossy) glossRandom.seed(i, j, seed ^ (GLOSS_STREAM + pass));
     }
 
     /**
