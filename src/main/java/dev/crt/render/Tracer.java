@@ -47,6 +47,8 @@ final class Tracer {
     private final int[] lastOccluder;
 
     private final PhongShading phong;
+    /** Null unless some material shades with the Gooch model. */
+    private final GoochShading gooch;
     /** The generator of the lights' random choices (area light jitter), seeded per pixel. */
     final PixelRandom lightRandom = new PixelRandom();
     /** Keeps the lights' stream apart from the pixel sampler's, which is seeded from the same pixel. */
@@ -94,6 +96,7 @@ final class Tracer {
         glossy = geometry.materials.glossy();
         textured = footprints ? new TextureShading(shapes, materials, geometry.materials.prepared()) : null;
         phong = new PhongShading(this, materials, lights);
+        gooch = geometry.materials.gooch() ? new GoochShading(materials, lights, lightRandom) : null;
     }
 
     Shapes shapes() { return shapes; }
@@ -167,7 +170,9 @@ final class Tracer {
         if (local != 0) {
             // On smooth meshes the lights are looked at from the shading point and along the shading
             // normal; shadow rays still leave along the geometric normal.
-            if (surface.shaded) {
+            if (gooch != null && mat[m + Materials.MODEL] == Materials.GOOCH) {
+                gooch.shade(m, cr, cg, cb, ks, er, eg, eb, px, py, pz, snx, sny, snz, -dx, -dy, -dz, colour);
+            } else if (surface.shaded) {
                 phong.shade(m, cr, cg, cb, ks, er, eg, eb, surface.lx, surface.ly, surface.lz, nx, ny, nz, snx, sny, snz,
                         -dx, -dy, -dz, delta, colour);
             } else {
