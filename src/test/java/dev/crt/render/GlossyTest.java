@@ -36,7 +36,7 @@ class GlossyTest {
         Vec3 b = r.cross(a);
         double cosMax = Math.cos(rough * Math.PI / 2);
         Rgb sum = Rgb.BLACK;
-        int n = 300;
+        int n = 100;
         for (int i = 0; i < n; i++) {
             double cos = 1 - (i + 0.5) / n * (1 - cosMax), sin = Math.sqrt(1 - cos * cos);
             for (int k = 0; k < n; k++) {
