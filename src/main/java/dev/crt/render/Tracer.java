@@ -92,6 +92,7 @@ final class Tracer {
         java.util.Arrays.fill(lastOccluder, NONE);
         walker = new BvhWalker(bvh == null ? 1 : bvh.depth + 2);
         absorbing = geometry.materials.absorbing();
+        csgScratch.absorbing = absorbing;
         footprints = !geometry.materials.textures.isEmpty();
         glossy = geometry.materials.glossy();
         textured = footprints ? new TextureShading(shapes, materials, geometry.materials.prepared()) : null;
@@ -477,7 +478,16 @@ final class Tracer {
 
     private double itemTransmittance(int item, double tMax) {
         if (item < 0) {
-            return csg.transmittance(-item - 1, ray, tMax, shapes, geometry.materials, span, csgScratch);
+            if (!absorbing) return csg.transmittance(-item - 1, ray, tMax, shapes, geometry.materials, span, csgScratch);
+            CsgSolids.Scratch sc = csgScratch;
+            sc.depthR = 0;
+            sc.depthG = 0;
+            sc.depthB = 0;
+            double kt = csg.transmittance(-item - 1, ray, tMax, shapes, geometry.materials, span, sc);
+            depthR += sc.depthR;
+            depthG += sc.depthG;
+            depthB += sc.depthB;
+            return kt;
         }
         if (!shapes.span(item, ray, span)) return 1;
         int crossings = 0;
