@@ -42,6 +42,10 @@ class TextureScriptsTest {
                 .texture()).isEqualTo(new Wood(new Rgb(1, 0, 0), Rgb.BLACK, 0.2, 0.5, 2));
         assertThat(material("Material { color -> Marble { color2 -> rgb(0,0,1) } }").texture())
                 .isEqualTo(new Marble(Rgb.WHITE, new Rgb(0, 0, 1), 1, 0, 4));
+        dev.crt.scene.Checker nested = (dev.crt.scene.Checker) material("Material { color -> Checker { color1 -> Marble { } color2 -> rgb(0, 0, 1) } }").texture();
+        assertThat(nested.texture1()).isEqualTo(new Marble(Rgb.WHITE, Rgb.BLACK, 1, 0, 4));
+        assertThat(nested.texture2()).isNull();
+        assertThat(nested.color2()).isEqualTo(new Rgb(0, 0, 1));
         at(error("x = Noise { octaves -> 0 }\n"), 1, 13, "octaves must be an integer >= 1, got 0");
         at(error("x = Wood { octaves -> 17 }\n"), 1, 12, "octaves must be an integer from 1 to 16, got 17");
         at(error("x = Marble { turbulence -> -1 }\n"), 1, 14, "turbulence must be >= 0, got -1");

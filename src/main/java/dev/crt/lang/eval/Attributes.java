@@ -124,8 +124,9 @@ final class Attributes {
         Given g = given.get(name);
         if (g == null) return fallback;
         if (g.value() instanceof ColorValue c) return c.color();
-        wrongType(name, (name.equals("color") || name.equals("emission")) && type.equals("Material") ? "an rgb colour or a texture"
-                : "an rgb colour", g.value());
+        boolean texturable = (name.equals("color") || name.equals("emission")) && type.equals("Material")
+                || name.startsWith("color") && type.equals("Checker");
+        wrongType(name, texturable ? "an rgb colour or a texture" : "an rgb colour", g.value());
         return fallback;
     }
 

@@ -237,8 +237,9 @@ final class ObjectBuilder {
     }
 
     private Value checker(Attributes a) {
-        return new TextureValue(new Checker(a.color("color1", Rgb.WHITE), a.color("color2", Rgb.BLACK),
-                a.number("scale", 1, Range.POSITIVE)));
+        Texture t1 = a.texture("color1"), t2 = a.texture("color2");
+        return new TextureValue(new Checker(t1 != null ? Rgb.WHITE : a.color("color1", Rgb.WHITE),
+                t2 != null ? Rgb.BLACK : a.color("color2", Rgb.BLACK), a.number("scale", 1, Range.POSITIVE), t1, t2));
     }
 
     /** A solid texture of the Perlin-noise family, built by its record's constructor. */
