@@ -186,15 +186,8 @@ final class Tracer {
         }
         if (depth == 0 || kr == 0 && kt == 0) return;
         travelled = start + hit.t;
-        children(px, py, pz, dx, dy, dz, nx, ny, nz, snx, sny, snz, entering, delta, depth, m, kr, kt, wr, wg, wb);
-        travelled = start;
-    }
-
-    /** The reflected and refracted rays of a hit, weighted by kr and kt. */
-    private void children(double px, double py, double pz, double dx, double dy, double dz, double nx, double ny,
-            double nz, double snx, double sny, double snz, boolean entering, double delta, int depth, int m, double kr,
-            double kt, double wr, double wg, double wb) {
-        double[] mat = materials;
+        // The reflected and refracted rays are traced from here rather than from a helper: deep
+        // mirror recursion then costs one stack frame per bounce (a glossy lobe adds one).
         double rough = mat[m + Materials.ROUGHNESS];
         int samples = (int) mat[m + Materials.GLOSSY_SAMPLES];
         // Mirror and refraction directions follow the shading normal; the offsets, the geometric one.
@@ -203,23 +196,41 @@ final class Tracer {
         if (kt > 0 && mat[m + Materials.FRESNEL] != 0) {
             fresnel(px, py, pz, dx, dy, dz, nx, ny, nz, snx, sny, snz, rdx, rdy, rdz, entering, delta, depth, kr, kt,
                     mat[m + Materials.IOR], rough, samples, wr, wg, wb);
+            travelled = start;
             return;
         }
         if (kr > 0) {
-            spawn(px, py, pz, rdx, rdy, rdz, nx, ny, nz, delta, depth, rough, samples, wr * kr, wg * kr, wb * kr);
+            if (rough == 0) {
+                reflectedRays++;
+                trace(px + delta * nx, py + delta * ny, pz + delta * nz, rdx, rdy, rdz, depth - 1, wr * kr, wg * kr, wb * kr);
+            } else {
+                spawn(px, py, pz, rdx, rdy, rdz, nx, ny, nz, delta, depth, rough, samples, wr * kr, wg * kr, wb * kr);
+            }
         }
         if (kt > 0) {
             double eta = entering ? 1 / mat[m + Materials.IOR] : mat[m + Materials.IOR];
             double cosI = -dDotN;
             double k = 1 - eta * eta * (1 - cosI * cosI);
             if (k < 0) {
-                spawn(px, py, pz, rdx, rdy, rdz, nx, ny, nz, delta, depth, rough, samples, wr * kt, wg * kt, wb * kt);
+                if (rough == 0) {
+                    refractedRays++;
+                    trace(px + delta * nx, py + delta * ny, pz + delta * nz, rdx, rdy, rdz, depth - 1, wr * kt, wg * kt, wb * kt);
+                } else {
+                    spawn(px, py, pz, rdx, rdy, rdz, nx, ny, nz, delta, depth, rough, samples, wr * kt, wg * kt, wb * kt);
+                }
             } else {
                 double c = eta * cosI - Math.sqrt(k);
-                spawn(px, py, pz, eta * dx + c * snx, eta * dy + c * sny, eta * dz + c * snz, nx, ny, nz, -delta, depth, rough,
-                        samples, wr * kt, wg * kt, wb * kt);
+                if (rough == 0) {
+                    refractedRays++;
+                    trace(px - delta * nx, py - delta * ny, pz - delta * nz, eta * dx + c * snx, eta * dy + c * sny,
+                            eta * dz + c * snz, depth - 1, wr * kt, wg * kt, wb * kt);
+                } else {
+                    spawn(px, py, pz, eta * dx + c * snx, eta * dy + c * sny, eta * dz + c * snz, nx, ny, nz, -delta, depth,
+                            rough, samples, wr * kt, wg * kt, wb * kt);
+                }
             }
         }
+        travelled = start;
     }
 
     /**
