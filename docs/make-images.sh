@@ -20,3 +20,11 @@ sed 's/camera -> Camera { position -> vec3(0, 3.2, -7) pointing -> vec3(0, 0.8, 
   "$root/scenes/still-life.crt" > "$spherical"
 "$crt" render "$spherical" --width 720 --height 360 -o "$images/still-life-spherical.png" -q
 echo "docs/make-images.sh: wrote $images/still-life.png and still-life-spherical.png"
+
+# rendering.md, "Textures, bump maps, glossy finishes, Gooch shading": one small scene per feature
+# (docs/scenes), and the materials still life.
+for name in solid-textures image-texture bump glossy gooch; do
+  "$crt" render "$root/docs/scenes/$name.crt" -o "$images/materials-$name.png" -q
+done
+"$crt" render "$root/scenes/materials.crt" --supersampling 2 -o "$images/materials.png" -q
+echo "docs/make-images.sh: wrote $images/materials-*.png and materials.png"

@@ -54,6 +54,20 @@ final class CameraRays {
 
     boolean hasLens() { return lensRadius > 0; }
 
+    /**
+     * The ray cone's spread (radians) of one pixel along the unit direction d: for perspective
+     * 2h/H·(d·f)², the angle a pixel spans in the radial direction there, so that the cone's width
+     * stretched by the slant, spread·t/|d·N|, is exactly one pixel's width on a plane facing the
+     * camera; for the 360° projections the angle one pixel spans, π/H (spherical) or 2π/W (cylindrical).
+     */
+    double spread(double[] d) {
+        if (projection == Projection.PERSPECTIVE) {
+            double c = d[0] * fx + d[1] * fy + d[2] * fz;
+            return 2 * halfHeight / height * c * c;
+        }
+        return projection == Projection.SPHERICAL ? Math.PI / height : 2 * Math.PI / width;
+    }
+
     /** The pinhole direction through sample (sx, sy) of pixel (i, j), written to {@code d[0..2]}. */
     void direction(int i, int j, double sx, double sy, double[] d) {
         if (projection != Projection.PERSPECTIVE) {

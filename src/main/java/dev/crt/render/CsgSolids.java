@@ -270,6 +270,12 @@ final class CsgSolids {
         int[] order, merge;
         final BvhWalker walker;
         int starts;
+        /**
+         * Set by the tracer when some material absorbs: shadow walks then add the optical depth
+         * a·s of each stretch inside the solid (a of the surface it leaves by) to depthR, G, B.
+         */
+        boolean absorbing;
+        double depthR, depthG, depthB;
 
         Scratch(CsgSolids csg) {
             int n = Math.max(1, csg.maxLeaves);
@@ -452,7 +458,8 @@ final class CsgSolids {
      * 0 as soon as an opaque one is crossed.
      */
     double transmittance(int tree, Ray ray, double tMax, Shapes shapes, Materials materials, LineSpan span, Scratch sc) {
-        return pair[tree] ? walkPair(tree, ray, tMax, null, shapes, materials, span, sc)
+        // The pair walk keeps no stretch lengths: a shadow ray that absorbs (Beer) takes the general walk.
+        return pair[tree] && !sc.absorbing ? walkPair(tree, ray, tMax, null, shapes, materials, span, sc)
                 : walk(tree, ray, tMax, null, shapes, materials, span, sc);
     }
 
@@ -474,6 +481,9 @@ final class CsgSolids {
         for (int i = 0; i < sc.starts; i++) flip(tree, sc.startInside[i], sc);
         boolean known = false, state = false;
         double product = 1;
+        // Where the shadow segment last entered the solid (0: it starts inside), for Beer's law.
+        double enter = 0;
+        int enterShape = -1;
         int[] order = sort(sc.eventT, n, sc.order, sc.merge);
         int i = 0;
         while (i < n) {
@@ -504,10 +514,25 @@ final class CsgSolids {
                     }
                     product *= materials.transparency(shapes.material[shape]);
                     if (product == 0) return 0;
+                    if (sc.absorbing) {
+                        if (now) {
+                            enter = sc.eventT[shown];
+                            enterShape = shape;
+                        } else {
+                            absorb(materials, shapes.material[shape], sc.eventT[shown] - enter, sc);
+                        }
+                    }
                 }
                 state = now;
             }
             i = j;
+        }
+        if (hit == null && sc.absorbing) {
+            if (!known) state = rootState(tree, sc);
+            // Still inside where the segment ends: the stretch counts with the material of the
+            // surface ahead, or failing one (an unbounded solid) of the one it entered by.
+            int ahead = i < n ? leafShape[leafStart[tree] + sc.eventLeaf[order[i]]] : enterShape;
+            if (state && ahead >= 0) absorb(materials, shapes.material[ahead], tMax - enter, sc);
         }
         return hit == null ? product : 0;
     }
@@ -594,5 +619,13 @@ final class CsgSolids {
             case INTERSECTION -> a & b;
             default -> a & !b;
         };
+    }
+
+    private static void absorb(Materials materials, int material, double length, Scratch sc) {
+        int m = material * Materials.STRIDE;
+        double[] d = materials.data;
+        sc.depthR += d[m + Materials.AR] * length;
+        sc.depthG += d[m + Materials.AG] * length;
+        sc.depthB += d[m + Materials.AB] * length;
     }
 }

@@ -1,8 +1,14 @@
 package dev.crt.render;
 
-import dev.crt.scene.Checker;
+import dev.crt.scene.Finish;
 import dev.crt.scene.Material;
+import dev.crt.scene.ShadingModel;
+import dev.crt.scene.Texture;
+import java.util.ArrayList;
 import java.util.Arrays;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
 
 /**
  * The distinct materials of a scene as one flat array, {@link #STRIDE} doubles each. Materials are told
@@ -10,13 +16,23 @@ import java.util.Arrays;
  * array itself: a scene with a million materials costs no object per material.
  */
 final class Materials {
-    static final int STRIDE = 25;
+    static final int STRIDE = 36;
     static final int R = 0, G = 1, B = 2, DIFFUSE = 3, SPECULAR = 4, SHININESS = 5, REFLECTIVITY = 6,
             TRANSPARENCY = 7, IOR = 8, ER = 9, EG = 10, EB = 11, ORIGINAL_DIFFUSE = 12, FRESNEL = 13,
-            AR = 14, AG = 15, AB = 16, TEXTURE = 17, T1R = 18, T1G = 19, T1B = 20, T2R = 21, T2G = 22, T2B = 23,
-            TSCALE = 24;
-    /** {@link #TEXTURE} values: a plain colour, or a checkerboard of T1 and T2 with cells TSCALE wide. */
-    static final double PLAIN = 0, CHECKER = 1;
+            AR = 14, AG = 15, AB = 16;
+    /**
+     * Per channel, 0 for plain or 1 + the index of its texture in {@link #textures}; TEXTURED is 1
+     * when any of them (or the bump map) is set, the one test a plain material pays for.
+     */
+    static final int TEX_COLOR = 17, TEXTURED = 18, TEX_EMISSION = 19, TEX_SPECULAR = 20, TEX_REFLECTIVITY = 21,
+            TEX_TRANSPARENCY = 22, TEX_BUMP = 23, BUMPSCALE = 24, ROUGHNESS = 25, GLOSSY_SAMPLES = 26, MODEL = 27,
+            COOL = 28, WARM = 31, OUTLINE = 34, NEEDS_UV = 35;
+    /** {@link #MODEL} values. */
+    static final double PHONG = 0, GOOCH = 1;
+
+    /** The distinct textures the materials use (equal textures share one index). */
+    final List<Texture> textures = new ArrayList<>();
+    private final Map<Texture, Integer> textureIndex = new HashMap<>();
 
     double[] data = new double[STRIDE * 8];
     private int count;
@@ -48,17 +64,28 @@ final class Materials {
         v[AR] = m.absorption().r();
         v[AG] = m.absorption().g();
         v[AB] = m.absorption().b();
-        for (int k = TEXTURE; k < STRIDE; k++) v[k] = 0;
-        if (m.texture() instanceof Checker c) {
-            v[TEXTURE] = CHECKER;
-            v[T1R] = c.color1().r();
-            v[T1G] = c.color1().g();
-            v[T1B] = c.color1().b();
-            v[T2R] = c.color2().r();
-            v[T2G] = c.color2().g();
-            v[T2B] = c.color2().b();
-            v[TSCALE] = c.scale();
-        }
+        Finish f = m.finish();
+        v[TEX_COLOR] = texture(m.texture());
+        v[TEX_EMISSION] = texture(f.emission());
+        v[TEX_SPECULAR] = texture(f.specular());
+        v[TEX_REFLECTIVITY] = texture(f.reflectivity());
+        v[TEX_TRANSPARENCY] = texture(f.transparency());
+        v[TEX_BUMP] = texture(f.bump());
+        boolean uv = needsUv(m.texture()) || needsUv(f.emission()) || needsUv(f.specular()) || needsUv(f.reflectivity())
+                || needsUv(f.transparency()) || needsUv(f.bump());
+        v[TEXTURED] = m.texture() != null || f.textured() ? 1 : 0;
+        v[NEEDS_UV] = uv ? 1 : 0;
+        v[BUMPSCALE] = f.bumpScale();
+        v[ROUGHNESS] = f.roughness();
+        v[GLOSSY_SAMPLES] = f.glossySamples();
+        v[MODEL] = f.model() == ShadingModel.GOOCH ? GOOCH : PHONG;
+        v[COOL] = f.cool().r();
+        v[COOL + 1] = f.cool().g();
+        v[COOL + 2] = f.cool().b();
+        v[WARM] = f.warm().r();
+        v[WARM + 1] = f.warm().g();
+        v[WARM + 2] = f.warm().b();
+        v[OUTLINE] = f.outline();
         int mask = table.length - 1;
         int slot = hash(v, 0) & mask;
         int k;
@@ -77,6 +104,53 @@ final class Materials {
         last = m;
         lastIndex = k;
         return k;
+    }
+
+    private static boolean needsUv(Texture t) { return t != null && t.needsUv(); }
+
+    private double texture(Texture t) {
+        if (t == null) return 0;
+        Integer k = textureIndex.get(t);
+        if (k == null) {
+            k = textures.size();
+            textures.add(t);
+            textureIndex.put(t, k);
+        }
+        return k + 1;
+    }
+
+    private Texture[] prepared;
+
+    /**
+     * Makes the textures ready for pictures of output gamma {@code gamma} (image textures decode
+     * to linear light and build their mipmaps): once per prepared scene, before tracing.
+     */
+    void prepare(double gamma) {
+        Texture[] ready = new Texture[textures.size() + 1];
+        for (int k = 0; k < textures.size(); k++) ready[k + 1] = textures.get(k).prepared(gamma);
+        prepared = ready;
+    }
+
+    /** The prepared textures, texture k at index k + 1 (as the channel slots hold them); as stored when not prepared. */
+    Texture[] prepared() {
+        if (prepared == null) prepare(1);
+        return prepared;
+    }
+
+    /** Whether some material asks for glossy reflection and refraction. */
+    boolean glossy() {
+        for (int k = 0; k < count; k++) {
+            if (data[k * STRIDE + ROUGHNESS] > 0) return true;
+        }
+        return false;
+    }
+
+    /** Whether some material shades with the Gooch model. */
+    boolean gooch() {
+        for (int k = 0; k < count; k++) {
+            if (data[k * STRIDE + MODEL] == GOOCH) return true;
+        }
+        return false;
     }
 
     private int add(double[] v, int slot) {

@@ -20,18 +20,19 @@ final class PhongShading {
     }
 
     /**
-     * The local colour of material m, of surface colour C = (cr, cg, cb), at p with ray-facing
+     * The local colour of material m, of surface colour C = (cr, cg, cb), specular factor ks and
+     * emission E = (er, eg, eb) (the material's, or its textures' at this point), at p with ray-facing
      * shading normal n and view direction v, into {@code colour}; shadow rays leave p along the
      * ray-facing geometric normal g (the same as n except on smooth meshes).
      */
-    void shade(int m, double cr, double cg, double cb, double px, double py, double pz, double gx, double gy, double gz,
+    void shade(int m, double cr, double cg, double cb, double ks, double er, double eg, double eb, double px, double py, double pz, double gx, double gy, double gz,
             double nx, double ny, double nz, double vx, double vy, double vz, double delta, double[] colour) {
         double[] mat = materials;
-        double kd = mat[m + Materials.DIFFUSE], ks = mat[m + Materials.SPECULAR];
+        double kd = mat[m + Materials.DIFFUSE];
         double shininess = mat[m + Materials.SHININESS];
-        double r = mat[m + Materials.ER] + lights.ambientR * cr;
-        double g = mat[m + Materials.EG] + lights.ambientG * cg;
-        double b = mat[m + Materials.EB] + lights.ambientB * cb;
+        double r = er + lights.ambientR * cr;
+        double g = eg + lights.ambientG * cg;
+        double b = eb + lights.ambientB * cb;
         double nv = nx * vx + ny * vy + nz * vz;
         Lights l = lights;
         LightSample ls = sample;

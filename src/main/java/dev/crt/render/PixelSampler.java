@@ -40,6 +40,8 @@ final class PixelSampler {
     /** The jittered sampler's lens strata, in random orders: its Latin hypercube. */
     private final int[] lensStrataU, lensStrataV;
     private final int pilotCount, width, height;
+    /** A sample's share of a pixel's width, 1/supersampling: its ray cone is that much narrower. */
+    private final double spreadShare;
     /** Per pixel, the adaptive pilot's largest channel variance; shared by the render's samplers. */
     private final float[] pilotVariance;
 
@@ -72,6 +74,7 @@ final class PixelSampler {
         pilotCount = Math.min(PILOT, budget);
         width = settings.width();
         height = settings.height();
+        spreadShare = 1.0 / grid;
         this.pilotVariance = pilotVariance;
     }
 
@@ -268,6 +271,7 @@ final class PixelSampler {
     private void trace(int i, int j, double sx, double sy, double w) {
         camera.direction(i, j, sx, sy, direction);
         tracer.primaryRays++;
+        if (tracer.footprints) tracer.spread = camera.spread(direction) * spreadShare;
         if (original != null) {
             original.trace(camera.px, camera.py, camera.pz, direction[0], direction[1], direction[2], depth, 0, w, w, w);
         } else {
@@ -280,6 +284,7 @@ final class PixelSampler {
         camera.aperture.sample(u1, u2, u3, lens);
         camera.throughLens(lens[0], lens[1], origin, direction);
         tracer.primaryRays++;
+        if (tracer.footprints) tracer.spread = camera.spread(direction) * spreadShare;
         if (original != null) {
             original.trace(origin[0], origin[1], origin[2], direction[0], direction[1], direction[2], depth, 0, w, w, w);
         } else {

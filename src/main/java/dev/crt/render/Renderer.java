@@ -39,6 +39,7 @@ public final class Renderer {
         entities = scene.entities();
         geometry = new SceneGeometry(scene.entities());
         lights = new Lights(settings.lights());
+        geometry.materials.prepare(settings.outputGamma());
         background = new BackgroundShader(settings.effectiveBackground(), settings.outputGamma(),
                 settings.shading() == Shading.ORIGINAL);
         buildNanos = System.nanoTime() - start;
@@ -138,6 +139,7 @@ public final class Renderer {
             pool.add(work);
         }
         runOnThreads(pool, "crt-render-", cancelled);
+        if (geometry.materials.gooch() && !cancelled.get()) outlines(image, camera);
         long primary = 0, shadow = 0, reflected = 0, refracted = 0;
         for (Tracer t : tracers) {
             primary += t.primaryRays;
@@ -219,6 +221,23 @@ public final class Renderer {
         double[] depth = new double[settings.width() * settings.height()];
         primaryHits((i, tracer) -> depth[i] = tracer == null ? Double.POSITIVE_INFINITY : tracer.hit.t);
         return depth;
+    }
+
+    /** Draws the Gooch materials' outlines over {@code image} from the primary hits through the pixel centres. */
+    private void outlines(FrameBuffer image, CameraRays camera) {
+        int n = settings.width() * settings.height();
+        int[] shape = new int[n], face = new int[n];
+        double[] t = new double[n];
+        boolean[] flip = new boolean[n];
+        primaryHits((i, tracer) -> {
+            shape[i] = tracer == null ? -1 : tracer.hit.shape;
+            if (tracer != null) {
+                face[i] = tracer.hit.face;
+                t[i] = tracer.hit.t;
+                flip[i] = tracer.hit.flip;
+            }
+        });
+        Outlines.draw(image, geometry, camera, shape, face, t, flip);
     }
 
     /** Receives pixel {@code i}'s primary hit, in {@code tracer.hit}, or null for the background. */

@@ -47,10 +47,26 @@ final class Tracer {
     private final int[] lastOccluder;
 
     private final PhongShading phong;
+    /** Null unless some material shades with the Gooch model. */
+    private final GoochShading gooch;
     /** The generator of the lights' random choices (area light jitter), seeded per pixel. */
     final PixelRandom lightRandom = new PixelRandom();
     /** Keeps the lights' stream apart from the pixel sampler's, which is seeded from the same pixel. */
     private static final long LIGHT_STREAM = 0x4c69676874734c6cL;
+    /** Whether some material is glossy (roughness > 0): only then is the lobes' generator seeded. */
+    private final boolean glossy;
+    /** The generator of glossy lobe directions, seeded per pixel apart from the lights' stream. */
+    private final PixelRandom glossRandom = new PixelRandom();
+    private static final long GLOSS_STREAM = 0x476c6f7373794c62L;
+    /** Whether the current ray descends from a sampled lobe: lobes below it take one sample. */
+    private boolean insideLobe;
+    /** Whether some material has a texture: only then do rays carry a footprint (a ray cone). */
+    final boolean footprints;
+    /** The ray cone's spread (radians) of the current camera ray, set by the pixel sampler when {@link #footprints}. */
+    double spread;
+    /** The length of the ray path from the camera to the current ray's origin: the cone's width there is spread × it. */
+    private double travelled;
+    private final TextureShading textured;
     /** Whether some material absorbs (Beer's law): only then do rays and shadow rays track distances inside solids. */
     final boolean absorbing;
     /** The optical depth a·s per channel gathered by the current shadow ray. */
@@ -76,7 +92,12 @@ final class Tracer {
         java.util.Arrays.fill(lastOccluder, NONE);
         walker = new BvhWalker(bvh == null ? 1 : bvh.depth + 2);
         absorbing = geometry.materials.absorbing();
+        csgScratch.absorbing = absorbing;
+        footprints = !geometry.materials.textures.isEmpty();
+        glossy = geometry.materials.glossy();
+        textured = footprints ? new TextureShading(shapes, materials, geometry.materials.prepared()) : null;
         phong = new PhongShading(this, materials, lights);
+        gooch = geometry.materials.gooch() ? new GoochShading(materials, lights, lightRandom) : null;
     }
 
     Shapes shapes() { return shapes; }
@@ -124,62 +145,92 @@ final class Tracer {
         }
         double kt = mat[m + Materials.TRANSPARENCY];
         double kr = mat[m + Materials.REFLECTIVITY];
+        double ks = mat[m + Materials.SPECULAR];
+        double cr = mat[m + Materials.R], cg = mat[m + Materials.G], cb = mat[m + Materials.B];
+        double er = mat[m + Materials.ER], eg = mat[m + Materials.EG], eb = mat[m + Materials.EB];
+        double start = travelled;
+        if (mat[m + Materials.TEXTURED] != 0) {
+            TextureShading ts = textured;
+            // The cone's width where it meets the surface, stretched by the slant (a grazing ray covers a long strip).
+            double width = spread * (start + hit.t) / Math.max(Math.abs(dn), 1e-9);
+            ts.shade(s, hit.face, m, surface, gx, gy, gz, snx, sny, snz, width, delta);
+            kt = ts.kt;
+            kr = ts.kr;
+            ks = ts.ks;
+            cr = ts.cr;
+            cg = ts.cg;
+            cb = ts.cb;
+            er = ts.er;
+            eg = ts.eg;
+            eb = ts.eb;
+            snx = ts.snx;
+            sny = ts.sny;
+            snz = ts.snz;
+        }
         double local = 1 - kt;
         if (local != 0) {
-            double cr = mat[m + Materials.R], cg = mat[m + Materials.G], cb = mat[m + Materials.B];
-            if (mat[m + Materials.TEXTURE] != Materials.PLAIN) {
-                // Just inside the solid (against the outward normal g), so a face on a cell boundary takes the inside cell.
-                int t = s * 12;
-                double[] e = shapes.toEntity;
-                double qx = px - delta * gx, qy = py - delta * gy, qz = pz - delta * gz;
-                double ex = e[t] * qx + e[t + 1] * qy + e[t + 2] * qz + e[t + 3];
-                double ey = e[t + 4] * qx + e[t + 5] * qy + e[t + 6] * qz + e[t + 7];
-                double ez = e[t + 8] * qx + e[t + 9] * qy + e[t + 10] * qz + e[t + 11];
-                double k = mat[m + Materials.TSCALE];
-                boolean even = ((long) Math.floor(ex / k) + (long) Math.floor(ey / k) + (long) Math.floor(ez / k) & 1) == 0;
-                int c = m + (even ? Materials.T1R : Materials.T2R);
-                cr = mat[c];
-                cg = mat[c + 1];
-                cb = mat[c + 2];
-            }
             // On smooth meshes the lights are looked at from the shading point and along the shading
             // normal; shadow rays still leave along the geometric normal.
-            if (surface.shaded) {
-                phong.shade(m, cr, cg, cb, surface.lx, surface.ly, surface.lz, nx, ny, nz, snx, sny, snz, -dx, -dy, -dz, delta,
-                        colour);
+            if (gooch != null && mat[m + Materials.MODEL] == Materials.GOOCH) {
+                gooch.shade(m, cr, cg, cb, ks, er, eg, eb, px, py, pz, snx, sny, snz, -dx, -dy, -dz, colour);
+            } else if (surface.shaded) {
+                phong.shade(m, cr, cg, cb, ks, er, eg, eb, surface.lx, surface.ly, surface.lz, nx, ny, nz, snx, sny, snz,
+                        -dx, -dy, -dz, delta, colour);
             } else {
-                phong.shade(m, cr, cg, cb, px, py, pz, nx, ny, nz, nx, ny, nz, -dx, -dy, -dz, delta, colour);
+                phong.shade(m, cr, cg, cb, ks, er, eg, eb, px, py, pz, nx, ny, nz, snx, sny, snz, -dx, -dy, -dz, delta,
+                        colour);
             }
             accR += wr * local * colour[0];
             accG += wg * local * colour[1];
             accB += wb * local * colour[2];
         }
-        if (depth == 0) return;
+        if (depth == 0 || kr == 0 && kt == 0) return;
+        travelled = start + hit.t;
+        // The reflected and refracted rays are traced from here rather than from a helper: deep
+        // mirror recursion then costs one stack frame per bounce (a glossy lobe adds one).
+        double rough = mat[m + Materials.ROUGHNESS];
+        int samples = (int) mat[m + Materials.GLOSSY_SAMPLES];
         // Mirror and refraction directions follow the shading normal; the offsets, the geometric one.
         double dDotN = dx * snx + dy * sny + dz * snz;
         double rdx = dx - 2 * dDotN * snx, rdy = dy - 2 * dDotN * sny, rdz = dz - 2 * dDotN * snz;
         if (kt > 0 && mat[m + Materials.FRESNEL] != 0) {
             fresnel(px, py, pz, dx, dy, dz, nx, ny, nz, snx, sny, snz, rdx, rdy, rdz, entering, delta, depth, kr, kt,
-                    mat[m + Materials.IOR], wr, wg, wb);
+                    mat[m + Materials.IOR], rough, samples, wr, wg, wb);
+            travelled = start;
             return;
         }
         if (kr > 0) {
-            reflectedRays++;
-            trace(px + delta * nx, py + delta * ny, pz + delta * nz, rdx, rdy, rdz, depth - 1, wr * kr, wg * kr, wb * kr);
+            if (rough == 0) {
+                reflectedRays++;
+                trace(px + delta * nx, py + delta * ny, pz + delta * nz, rdx, rdy, rdz, depth - 1, wr * kr, wg * kr, wb * kr);
+            } else {
+                spawn(px, py, pz, rdx, rdy, rdz, nx, ny, nz, delta, depth, rough, samples, wr * kr, wg * kr, wb * kr);
+            }
         }
         if (kt > 0) {
-            refractedRays++;
             double eta = entering ? 1 / mat[m + Materials.IOR] : mat[m + Materials.IOR];
             double cosI = -dDotN;
             double k = 1 - eta * eta * (1 - cosI * cosI);
             if (k < 0) {
-                trace(px + delta * nx, py + delta * ny, pz + delta * nz, rdx, rdy, rdz, depth - 1, wr * kt, wg * kt, wb * kt);
+                if (rough == 0) {
+                    refractedRays++;
+                    trace(px + delta * nx, py + delta * ny, pz + delta * nz, rdx, rdy, rdz, depth - 1, wr * kt, wg * kt, wb * kt);
+                } else {
+                    spawn(px, py, pz, rdx, rdy, rdz, nx, ny, nz, delta, depth, rough, samples, wr * kt, wg * kt, wb * kt);
+                }
             } else {
                 double c = eta * cosI - Math.sqrt(k);
-                trace(px - delta * nx, py - delta * ny, pz - delta * nz,
-                        eta * dx + c * snx, eta * dy + c * sny, eta * dz + c * snz, depth - 1, wr * kt, wg * kt, wb * kt);
+                if (rough == 0) {
+                    refractedRays++;
+                    trace(px - delta * nx, py - delta * ny, pz - delta * nz, eta * dx + c * snx, eta * dy + c * sny,
+                            eta * dz + c * snz, depth - 1, wr * kt, wg * kt, wb * kt);
+                } else {
+                    spawn(px, py, pz, eta * dx + c * snx, eta * dy + c * sny, eta * dz + c * snz, nx, ny, nz, -delta, depth,
+                            rough, samples, wr * kt, wg * kt, wb * kt);
+                }
             }
         }
+        travelled = start;
     }
 
     /**
@@ -190,7 +241,7 @@ final class Tracer {
      */
     private void fresnel(double px, double py, double pz, double dx, double dy, double dz, double nx, double ny, double nz,
             double sx, double sy, double sz, double rdx, double rdy, double rdz, boolean entering, double delta, int depth,
-            double kr, double kt, double ior, double wr, double wg, double wb) {
+            double kr, double kt, double ior, double rough, int samples, double wr, double wg, double wb) {
         double eta = entering ? 1 / ior : ior;
         double cosI = -(dx * sx + dy * sy + dz * sz);
         double k = 1 - eta * eta * (1 - cosI * cosI);
@@ -198,16 +249,73 @@ final class Tracer {
         double fr = k < 0 ? 1 : Fresnel.reflectance(cosI, cosT, eta);
         double reflect = kr + kt * fr, refract = kt * (1 - fr);
         if (reflect > 0) {
-            reflectedRays++;
-            trace(px + delta * nx, py + delta * ny, pz + delta * nz, rdx, rdy, rdz, depth - 1,
-                    wr * reflect, wg * reflect, wb * reflect);
+            spawn(px, py, pz, rdx, rdy, rdz, nx, ny, nz, delta, depth, rough, samples, wr * reflect, wg * reflect, wb * reflect);
         }
         if (refract > 0) {
-            refractedRays++;
             double c = eta * cosI - cosT;
-            trace(px - delta * nx, py - delta * ny, pz - delta * nz, eta * dx + c * sx, eta * dy + c * sy, eta * dz + c * sz,
-                    depth - 1, wr * refract, wg * refract, wb * refract);
+            spawn(px, py, pz, eta * dx + c * sx, eta * dy + c * sy, eta * dz + c * sz, nx, ny, nz, -delta, depth, rough, samples,
+                    wr * refract, wg * refract, wb * refract);
         }
+    }
+
+    /**
+     * Traces the secondary ray leaving p along r on the side {@code side} of the ray-facing
+     * geometric normal n (side = +delta: reflected, −delta: refracted). With roughness ρ > 0 it is
+     * spread over a lobe instead: {@code samples} directions (one inside a lobe already being
+     * sampled, so cost grows linearly with depth, not exponentially) drawn uniformly from the cone of
+     * half-angle ρ·90° about r, stratified in cos θ, each turned back across the tangent plane when it
+     * points to the wrong side, each weighted 1/samples.
+     */
+    private void spawn(double px, double py, double pz, double rx, double ry, double rz, double nx, double ny, double nz,
+            double side, int depth, double rough, int samples, double wr, double wg, double wb) {
+        if (side > 0) reflectedRays++;
+        else refractedRays++;
+        double ox = px + side * nx, oy = py + side * ny, oz = pz + side * nz;
+        if (rough == 0) {
+            trace(ox, oy, oz, rx, ry, rz, depth - 1, wr, wg, wb);
+            return;
+        }
+        int n = insideLobe ? 1 : samples;
+        boolean outer = !insideLobe;
+        insideLobe = true;
+        // An orthonormal frame (a, b, r) about the lobe's axis.
+        double ax, ay, az;
+        if (Math.abs(rx) < 0.9) {
+            ax = 0;
+            ay = rz;
+            az = -ry;
+        } else {
+            ax = -rz;
+            ay = 0;
+            az = rx;
+        }
+        double al = Math.sqrt(ax * ax + ay * ay + az * az);
+        ax /= al;
+        ay /= al;
+        az /= al;
+        double bx = ry * az - rz * ay, by = rz * ax - rx * az, bz = rx * ay - ry * ax;
+        double cosMax = Math.cos(rough * Math.PI / 2);
+        double w = 1.0 / n;
+        double sign = side > 0 ? 1 : -1;
+        for (int k = 0; k < n; k++) {
+            if (k > 0) {
+                if (side > 0) reflectedRays++;
+                else refractedRays++;
+            }
+            double cos = 1 - (k + glossRandom.next()) / n * (1 - cosMax);
+            double sin = Math.sqrt(Math.max(0, 1 - cos * cos));
+            double phi = 2 * Math.PI * glossRandom.next();
+            double ca = sin * Math.cos(phi), cb = sin * Math.sin(phi);
+            double gx = ca * ax + cb * bx + cos * rx, gy = ca * ay + cb * by + cos * ry, gz = ca * az + cb * bz + cos * rz;
+            double across = sign * (gx * nx + gy * ny + gz * nz);
+            if (across < 0) {
+                gx -= 2 * sign * across * nx;
+                gy -= 2 * sign * across * ny;
+                gz -= 2 * sign * across * nz;
+            }
+            trace(ox, oy, oz, gx, gy, gz, depth - 1, wr * w, wg * w, wb * w);
+        }
+        if (outer) insideLobe = false;
     }
 
     /**
@@ -254,6 +362,7 @@ final class Tracer {
     /** Seeds the light generator for pixel (i, j) and pass {@code pass}, when some light needs one. */
     void startPixel(int i, int j, long seed, int pass) {
         if (lights.random) lightRandom.seed(i, j, seed ^ (LIGHT_STREAM + pass));
+        if (glossy) glossRandom.seed(i, j, seed ^ (GLOSS_STREAM + pass));
     }
 
     /**
@@ -380,7 +489,16 @@ final class Tracer {
 
     private double itemTransmittance(int item, double tMax) {
         if (item < 0) {
-            return csg.transmittance(-item - 1, ray, tMax, shapes, geometry.materials, span, csgScratch);
+            if (!absorbing) return csg.transmittance(-item - 1, ray, tMax, shapes, geometry.materials, span, csgScratch);
+            CsgSolids.Scratch sc = csgScratch;
+            sc.depthR = 0;
+            sc.depthG = 0;
+            sc.depthB = 0;
+            double kt = csg.transmittance(-item - 1, ray, tMax, shapes, geometry.materials, span, sc);
+            depthR += sc.depthR;
+            depthG += sc.depthG;
+            depthB += sc.depthB;
+            return kt;
         }
         if (!shapes.span(item, ray, span)) return 1;
         int crossings = 0;
@@ -390,10 +508,26 @@ final class Tracer {
         }
         if (crossings == 0) return 1;
         int m = shapes.material[item] * Materials.STRIDE;
+        if (materials[m + Materials.TEX_TRANSPARENCY] != 0) return texturedTransmittance(item, m, tMax);
         double kt = materials[m + Materials.TRANSPARENCY];
         if (absorbing && kt != 0 && !span.surface) absorb(m, tMax);
         double product = kt;
         for (int k = 1; k < crossings; k++) product *= kt;
+        return product;
+    }
+
+    /** As {@link #itemTransmittance} for a material whose transparency is a texture: kt read at each crossing of {@link #span}. */
+    private double texturedTransmittance(int item, int m, double tMax) {
+        if (absorbing && !span.surface) absorb(m, tMax);
+        double product = 1;
+        // The crossings are read before transparencyAt reuses the ray's scratch.
+        for (int i = 0; i < span.count && product != 0; i++) {
+            double in = span.tIn[i], out = span.tOut[i];
+            int faceIn = span.faceIn[i], faceOut = span.faceOut[i];
+            boolean open = span.surface;
+            if (in > 0 && in < tMax) product *= textured.transparencyAt(item, faceIn, m, in, ray);
+            if (!open && out > 0 && out < tMax && product != 0) product *= textured.transparencyAt(item, faceOut, m, out, ray);
+        }
         return product;
     }
 }

@@ -3,7 +3,8 @@ package dev.crt.scene;
 /**
  * How a surface shades: Phong terms, mirror reflection, transparency with refraction, emission,
  * and (second wave) Fresnel weights for reflection and refraction, Beer's-law absorption inside, and
- * a {@code texture} (or null) that replaces {@code color}.
+ * a {@code texture} (or null) that replaces {@code color}, and the {@link Finish} of the other
+ * channels' textures, bump map, glossiness and shading model.
  */
 public record Material(
         Rgb color,
@@ -17,7 +18,16 @@ public record Material(
         boolean diffuseGiven,
         boolean fresnel,
         Rgb absorption,
-        Texture texture) {
+        Texture texture,
+        Finish finish) {
+
+    /** A material whose only texture, if any, is on {@code color}. */
+    public Material(Rgb color, double diffuse, double specular, double shininess, double reflectivity,
+            double transparency, double ior, Rgb emission, boolean diffuseGiven, boolean fresnel, Rgb absorption,
+            Texture texture) {
+        this(color, diffuse, specular, shininess, reflectivity, transparency, ior, emission, diffuseGiven, fresnel,
+                absorption, texture, Finish.NONE);
+    }
 
     /** A material of one plain colour. */
     public Material(Rgb color, double diffuse, double specular, double shininess, double reflectivity,

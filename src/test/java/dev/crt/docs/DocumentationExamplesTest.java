@@ -43,7 +43,9 @@ class DocumentationExamplesTest {
             if (!Files.exists(doc)) continue;
             for (Example e : examples(doc)) {
                 tests.add(DynamicTest.dynamicTest(name + ":" + e.line(), () -> {
-                    CompileResult r = CrtCompiler.compile(Source.of(name, e.text()), CompileOptions.DEFAULT);
+                    // The shipped assets, as the crt launcher finds them.
+                    CompileResult r = CrtCompiler.compile(Source.of(name, e.text()), new CompileOptions(0,
+                            List.of(Path.of("assets")), CompileOptions.DEFAULT_LOOP_BUDGET, CompileOptions.DEFAULT_TIME_BUDGET));
                     assertThat(r.hasErrors()).as(() -> r.diagnostics().stream()
                             .map(d -> DiagnosticFormatter.format(d, e.text())).collect(Collectors.joining("\n"))).isFalse();
                 }));

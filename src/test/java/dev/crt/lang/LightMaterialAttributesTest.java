@@ -61,7 +61,8 @@ class LightMaterialAttributesTest {
         assertThat(m.texture()).isEqualTo(new dev.crt.scene.Checker(new Rgb(1, 0, 0), Rgb.BLACK, 0.5));
         at(error("m = Material { color -> 5 }\n"), 1, 16, "attribute 'color' of Material expects an rgb colour or a texture, got number");
         at(error("c = Checker { scale -> 0 }\n"), 1, 15, "scale must be > 0, got 0");
-        at(error("c = Checker { color1 -> Checker { } }\n"), 1, 15, "attribute 'color1' of Checker expects an rgb colour, got texture");
+        at(error("c = Checker { color1 -> 3 }\n"), 1, 15, "attribute 'color1' of Checker expects an rgb colour or a texture, got number");
+        at(error("c = Noise { color1 -> Checker { } }\n"), 1, 13, "attribute 'color1' of Noise expects an rgb colour, got texture");
     }
 
     @Test

@@ -85,4 +85,29 @@ class CheckerTest {
         FrameBuffer fb = Renderer.prepare(scene(s, b)).render(2, RenderMonitor.NONE);
         assertThat(check(fb, s, 2, 1, x -> x, -2, 2.5, -1, 3)).isGreaterThan(500);
     }
+
+    @Test
+    void aCellColourMayItselfBeATexture() {
+        Settings s = settings();
+        Rgb a = rgb(1, 0.5, 0), b = rgb(0, 0.5, 1);
+        Checker inner = new Checker(a, b, 0.25);
+        Material m = new Material(Rgb.GREY, 1, 0, 30, 0, 0, 1, Rgb.BLACK, true, false, Rgb.BLACK,
+                new Checker(Rgb.WHITE, C2, 1, inner, null));
+        FrameBuffer fb = Renderer.prepare(scene(s, plane(Vec3.Y, Vec3.ZERO, m))).render(2, RenderMonitor.NONE);
+        int checked = 0;
+        for (int j = 0; j < s.height(); j++) {
+            for (int i = 0; i < s.width(); i++) {
+                Vec3 d = Reference.center(s, i, j);
+                if (d.y() >= 0) continue;
+                Vec3 x = EYE.plus(d.times(-EYE.y() / d.y()));
+                double fx = x.x() / 0.25, fz = x.z() / 0.25;
+                if (Math.abs(fx - Math.rint(fx)) < 1e-2 || Math.abs(fz - Math.rint(fz)) < 1e-2) continue;
+                boolean outerEven = ((long) Math.floor(x.x()) + (long) Math.floor(x.z()) - 1 & 1) == 0;
+                boolean innerEven = ((long) Math.floor(fx) + (long) Math.floor(fz) - 1 & 1) == 0;
+                Reference.assertPixel(fb, i, j, outerEven ? (innerEven ? a : b) : C2);
+                checked++;
+            }
+        }
+        assertThat(checked).isGreaterThan(1500);
+    }
 }

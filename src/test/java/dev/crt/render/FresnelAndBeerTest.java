@@ -6,6 +6,8 @@ import static org.assertj.core.api.Assertions.within;
 
 import dev.crt.geom.Vec3;
 import dev.crt.image.FrameBuffer;
+import dev.crt.scene.Csg;
+import dev.crt.scene.CsgOperation;
 import dev.crt.scene.Material;
 import dev.crt.scene.Rgb;
 import dev.crt.scene.Scene;
@@ -116,6 +118,32 @@ class FresnelAndBeerTest {
             double ac = c == 0 ? 0.2 : c == 1 ? 1 : 2;
             assertThat((double) fb.get(4, 4, c)).isCloseTo(kt * kt * Math.exp(-ac * d), within(1e-6));
             assertThat((double) fb.get(0, 0, c)).isCloseTo(kt * kt * Math.exp(-ac * d), within(1e-6));
+        }
+    }
+
+    @Test
+    void shadowRaysThroughAbsorbingCsgSolidsAreTintedByTheDistanceInsideTheResult() {
+        // As above, with the slab made by CSG: a thick slab minus its back part (d left), and the
+        // union of two overlapping slabs (1.5·d in all, crossed at its two outer faces only).
+        double d = 0.5, kt = 0.8;
+        Rgb a = rgb(0.2, 1, 2);
+        Material slab = new Material(Rgb.WHITE, 1, 0, 30, 0, kt, 1.5, Rgb.BLACK, true, false, a);
+        Settings s = settings(camera(v(0, 0, -0.9), Vec3.ZERO, 40), List.of(parallel(v(0, 0, -10), Vec3.ZERO, Rgb.WHITE, 0)),
+                new SolidBackground(Rgb.BLACK), 9, 9);
+        Csg cut = csg(CsgOperation.DIFFERENCE, box(v(-50, -50, -1 - 2 * d), v(50, 50, -1), slab),
+                box(v(-60, -60, -5), v(60, 60, -1 - d), slab));
+        Csg joined = csg(CsgOperation.UNION, box(v(-50, -50, -1 - d), v(50, 50, -1), slab),
+                box(v(-50, -50, -1 - 1.5 * d), v(50, 50, -1 - 0.5 * d), slab));
+        double[] thickness = {d, 1.5 * d};
+        Csg[] solids = {cut, joined};
+        for (int k = 0; k < 2; k++) {
+            Scene scene = scene(s, plane(v(0, 0, -1), Vec3.ZERO, matte(Rgb.WHITE)), solids[k]);
+            FrameBuffer fb = Renderer.prepare(scene).render(1, RenderMonitor.NONE);
+            for (int c = 0; c < 3; c++) {
+                double ac = c == 0 ? 0.2 : c == 1 ? 1 : 2;
+                assertThat((double) fb.get(4, 4, c)).as("solid %d channel %d", k, c)
+                        .isCloseTo(kt * kt * Math.exp(-ac * thickness[k]), within(1e-6));
+            }
         }
     }
 }

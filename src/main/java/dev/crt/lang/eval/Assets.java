@@ -43,16 +43,28 @@ final class Assets {
 
     PanoramaBackground panorama(String name, double angle) throws AssetProblem {
         Path file = find(name, "panorama");
+        return new PanoramaBackground(file.toString(), picture(file, name, "panorama"), angle);
+    }
+
+    /** The picture of an image texture, and the file it was found in. */
+    record Image(Path file, Picture picture) {}
+
+    Image image(String name) throws AssetProblem {
+        Path file = find(name, "image");
+        return new Image(file, picture(file, name, "image"));
+    }
+
+    private Picture picture(Path file, String name, String what) throws AssetProblem {
         Picture picture = decoded.get(file);
         if (picture == null) {
             try {
                 picture = PictureFiles.read(file);
             } catch (IOException e) {
-                throw new AssetProblem("cannot use panorama '" + name + "': " + e.getMessage());
+                throw new AssetProblem("cannot use " + what + " '" + name + "': " + e.getMessage());
             }
             decoded.put(file, picture);
         }
-        return new PanoramaBackground(file.toString(), picture, angle);
+        return picture;
     }
 
     MeshData mesh(String name) throws AssetProblem {

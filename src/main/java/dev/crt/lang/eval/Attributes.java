@@ -124,15 +124,28 @@ final class Attributes {
         Given g = given.get(name);
         if (g == null) return fallback;
         if (g.value() instanceof ColorValue c) return c.color();
-        wrongType(name, name.equals("color") && type.equals("Material") ? "an rgb colour or a texture" : "an rgb colour", g.value());
+        boolean texturable = (name.equals("color") || name.equals("emission")) && type.equals("Material")
+                || name.startsWith("color") && type.equals("Checker");
+        wrongType(name, texturable ? "an rgb colour or a texture" : "an rgb colour", g.value());
         return fallback;
     }
 
     double number(String name, double fallback, Range range) {
+        return number(name, fallback, range, "a number");
+    }
+
+    /** A number attribute that may instead be a texture (read by {@link #texture}): then the fallback. */
+    double numberOrTexture(String name, double fallback, Range range) {
+        Given g = given.get(name);
+        if (g != null && g.value() instanceof TextureValue) return fallback;
+        return number(name, fallback, range, "a number or a texture");
+    }
+
+    private double number(String name, double fallback, Range range, String expected) {
         Given g = given.get(name);
         if (g == null) return fallback;
         if (!(g.value() instanceof NumberValue n)) {
-            wrongType(name, "a number", g.value());
+            wrongType(name, expected, g.value());
             return fallback;
         }
         if (!range.contains(n.value())) {
@@ -182,6 +195,25 @@ final class Attributes {
     Texture texture(String name) {
         Given g = given.get(name);
         return g != null && g.value() instanceof TextureValue t ? t.texture() : null;
+    }
+
+    /** A texture attribute that must be a texture when given (a bump map). */
+    Texture requiredTexture(String name) {
+        Given g = given.get(name);
+        if (g == null) return null;
+        if (g.value() instanceof TextureValue t) return t.texture();
+        wrongType(name, "a texture", g.value());
+        return null;
+    }
+
+    /** A number or a vec3 (a number n means vec3(n, n, n)). */
+    Vec3 numberOrVector(String name, Vec3 fallback) {
+        Given g = given.get(name);
+        if (g == null) return fallback;
+        if (g.value() instanceof NumberValue n) return new Vec3(n.value(), n.value(), n.value());
+        if (g.value() instanceof VectorValue v) return v.vector();
+        wrongType(name, "a number or a vec3", g.value());
+        return fallback;
     }
 
     Material material(String name) {

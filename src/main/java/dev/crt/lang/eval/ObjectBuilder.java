@@ -22,6 +22,13 @@ import dev.crt.scene.Checker;
 import dev.crt.scene.Camera;
 import dev.crt.scene.Cone;
 import dev.crt.scene.Cylinder;
+import dev.crt.scene.Finish;
+import dev.crt.scene.ImageTexture;
+import dev.crt.scene.Marble;
+import dev.crt.scene.Noise;
+import dev.crt.scene.ShadingModel;
+import dev.crt.scene.TextureMapping;
+import dev.crt.scene.Wood;
 import dev.crt.scene.GradientBackground;
 import dev.crt.scene.Material;
 import dev.crt.scene.Mesh;
@@ -51,6 +58,9 @@ final class ObjectBuilder {
     private record ObjectType(Set<String> attributes, BiFunction<ObjectBuilder, Attributes, Value> build) {}
 
     private static final Map<String, ObjectType> TYPES = new LinkedHashMap<>();
+    /** The attributes of the Perlin-noise solid textures. */
+    private static final String[] SOLID = {"color1", "color2", "scale", "turbulence", "octaves"};
+
 
     static {
         type("Camera", ObjectBuilder::camera, "position", "pointing", "fov", "roll", "aperture", "focaldistance", "apertureshape",
@@ -60,8 +70,13 @@ final class ObjectBuilder {
         type("SpotLight", ObjectBuilder::spotLight, "origin", "pointing", "angle", "innerangle", "color", "falloff", "ambient");
         type("AreaLight", ObjectBuilder::areaLight, "corner", "edge1", "edge2", "samples", "color", "falloff", "ambient");
         type("Material", ObjectBuilder::material, "color", "diffuse", "specular", "shininess", "reflectivity",
-                "transparency", "ior", "emission", "fresnel", "absorption");
+                "transparency", "ior", "emission", "fresnel", "absorption", "roughness", "glossysamples", "bump",
+                "bumpscale", "model", "cool", "warm", "outline");
         type("Checker", ObjectBuilder::checker, "color1", "color2", "scale");
+        type("Noise", (b, a) -> solid(a, Noise::new), SOLID);
+        type("Wood", (b, a) -> solid(a, Wood::new), SOLID);
+        type("Marble", (b, a) -> solid(a, Marble::new), SOLID);
+        type("ImageTexture", ObjectBuilder::imageTexture, "file", "mapping", "scale", "rotate", "offset");
         type("Sphere", ObjectBuilder::sphere, "center", "radius", "material");
         type("Box", ObjectBuilder::box, "cornerA", "cornerB", "material");
         type("Plane", ObjectBuilder::plane, "normal", "position", "material");
@@ -222,27 +237,81 @@ final class ObjectBuilder {
     }
 
     private Value checker(Attributes a) {
-        return new TextureValue(new Checker(a.color("color1", Rgb.WHITE), a.color("color2", Rgb.BLACK),
-                a.number("scale", 1, Range.POSITIVE)));
+        Texture t1 = a.texture("color1"), t2 = a.texture("color2");
+        return new TextureValue(new Checker(t1 != null ? Rgb.WHITE : a.color("color1", Rgb.WHITE),
+                t2 != null ? Rgb.BLACK : a.color("color2", Rgb.BLACK), a.number("scale", 1, Range.POSITIVE), t1, t2));
+    }
+
+    /** A solid texture of the Perlin-noise family, built by its record's constructor. */
+    private interface SolidTexture {
+        Texture make(Rgb color1, Rgb color2, double scale, double turbulence, int octaves);
+    }
+
+    /** The most octaves a noise sum takes: beyond about 16 the terms are below a double's resolution of the first. */
+    static final int MAX_OCTAVES = 16;
+
+    private static Value solid(Attributes a, SolidTexture make) {
+        return new TextureValue(make.make(a.color("color1", Rgb.WHITE), a.color("color2", Rgb.BLACK),
+                a.number("scale", 1, Range.POSITIVE), a.number("turbulence", 0, Range.NOT_NEGATIVE),
+                a.integer("octaves", 4, 1, MAX_OCTAVES)));
+    }
+
+    private Value imageTexture(Attributes a) {
+        String file = a.string("file", null);
+        TextureMapping mapping = choice(a, "mapping", TextureMapping.UV, TextureMapping.values(), TextureMapping::scriptName);
+        Vec3 scale = a.numberOrVector("scale", new Vec3(1, 1, 1));
+        if (scale.x() == 0 || scale.y() == 0 || scale.z() == 0) a.error("scale", "an ImageTexture's scale must not be 0 in any axis");
+        Vec3 rotate = a.vector("rotate", Vec3.ZERO), offset = a.vector("offset", Vec3.ZERO);
+        if (file == null) return new TextureValue(new Checker(Rgb.WHITE, Rgb.BLACK, 1));
+        try {
+            Assets.Image image = assets.image(file);
+            return new TextureValue(new ImageTexture(image.file().toString(), image.picture(), mapping, scale, rotate, offset));
+        } catch (Assets.AssetProblem problem) {
+            a.error("file", problem.getMessage());
+            return new TextureValue(new Checker(Rgb.WHITE, Rgb.BLACK, 1));
+        }
+    }
+
+    /** A string attribute naming one of {@code values}; anything else is a diagnostic listing them. */
+    private static <T> T choice(Attributes a, String name, T fallback, T[] values, java.util.function.Function<T, String> script) {
+        String given = a.string(name, script.apply(fallback));
+        List<String> names = new ArrayList<>();
+        for (T v : values) {
+            names.add(script.apply(v));
+            if (script.apply(v).equals(given)) return v;
+        }
+        a.error(name, name + " must be one of \"" + String.join("\", \"", names) + "\", got \"" + given + "\""
+                + Spelling.suggestion(given.toLowerCase(Locale.ROOT), names));
+        return fallback;
     }
 
     private Value material(Attributes a) {
         Material d = Material.DEFAULT;
-        Texture texture = a.texture("color");
+        Finish f = Finish.NONE;
+        Texture texture = a.texture("color"), emission = a.texture("emission");
+        Finish finish = new Finish(emission, a.texture("specular"), a.texture("reflectivity"), a.texture("transparency"),
+                a.requiredTexture("bump"), a.number("bumpscale", f.bumpScale(), Range.ANY),
+                a.number("roughness", f.roughness(), Range.UNIT), a.integer("glossysamples", f.glossySamples(), 1, MAX_GLOSSY_SAMPLES),
+                choice(a, "model", ShadingModel.PHONG, ShadingModel.values(), ShadingModel::scriptName),
+                a.color("cool", f.cool()), a.color("warm", f.warm()), a.number("outline", f.outline(), Range.NOT_NEGATIVE));
         return new MaterialValue(new Material(
                 texture != null ? d.color() : a.color("color", d.color()),
                 a.number("diffuse", d.diffuse(), Range.ANY),
-                a.number("specular", d.specular(), Range.ANY),
+                a.numberOrTexture("specular", d.specular(), Range.ANY),
                 a.number("shininess", d.shininess(), Range.ANY),
-                a.number("reflectivity", d.reflectivity(), Range.UNIT),
-                a.number("transparency", d.transparency(), Range.UNIT),
+                a.numberOrTexture("reflectivity", d.reflectivity(), Range.UNIT),
+                a.numberOrTexture("transparency", d.transparency(), Range.UNIT),
                 a.number("ior", d.ior(), Range.POSITIVE),
-                a.color("emission", d.emission()),
+                emission != null ? d.emission() : a.color("emission", d.emission()),
                 a.has("diffuse"),
                 a.bool("fresnel", false),
                 absorption(a),
-                texture));
+                texture,
+                finish.equals(Finish.NONE) ? Finish.NONE : finish));
     }
+
+    /** Glossy lobe samples per shading point are capped, as area light samples are. */
+    static final int MAX_GLOSSY_SAMPLES = 256;
 
     private static Rgb absorption(Attributes a) {
         Rgb c = a.color("absorption", Rgb.BLACK);
