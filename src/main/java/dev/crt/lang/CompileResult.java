@@ -3,11 +3,16 @@ package dev.crt.lang;
 import dev.crt.scene.Scene;
 import java.util.List;
 
-/** The outcome of a compile: a scene when there was no error, and every diagnostic in source order. */
-public record CompileResult(Scene scene, List<Diagnostic> diagnostics) {
+/**
+ * The outcome of a compile: a scene when there was no error, every diagnostic in source order, and
+ * the source map when the options asked for one and the scene compiled (else null).
+ */
+public record CompileResult(Scene scene, List<Diagnostic> diagnostics, SourceMap sourceMap) {
     public CompileResult {
         diagnostics = List.copyOf(diagnostics);
     }
+
+    public CompileResult(Scene scene, List<Diagnostic> diagnostics) { this(scene, diagnostics, null); }
 
     public boolean hasErrors() { return diagnostics.stream().anyMatch(Diagnostic::isError); }
 

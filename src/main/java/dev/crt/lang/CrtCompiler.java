@@ -59,7 +59,7 @@ public final class CrtCompiler {
             running.set(evaluator);
             try {
                 Scene scene = evaluator.run(parsed.statements(), parsed.assignedNames(), name);
-                return new CompileResult(scene, evaluator.diagnostics());
+                return new CompileResult(scene, evaluator.diagnostics(), scene == null ? null : evaluator.sourceMap());
             } catch (ParseClock.OutOfTime out) {
                 // The statements are parsed again as they run; the budget covers that parse too.
                 List<Diagnostic> all = new ArrayList<>(evaluator.diagnostics());
