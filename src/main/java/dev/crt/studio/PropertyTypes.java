@@ -55,8 +55,8 @@ final class PropertyTypes {
                 num("ambient", "0", 0, false, INF, false));
         type("ParallelLight", vec("from", null), vec("pointing", null), color("color", "rgb(1, 1, 1)"),
                 num("ambient", "0", 0, false, INF, false));
-        type("SpotLight", vec("origin", null), vec("pointing", null), num("angle", "30", 0, false, 90, true),
-                num("innerangle", null, 0, true, 90, true), color("color", "rgb(1, 1, 1)"),
+        type("SpotLight", vec("origin", null), vec("pointing", null), num("angle", "30", 0, true, 90, false),
+                num("innerangle", null, 0, false, 90, false), color("color", "rgb(1, 1, 1)"),
                 num("falloff", "0", 0, false, INF, false), num("ambient", "0", 0, false, INF, false));
         type("AreaLight", vec("corner", null), vec("edge1", null), vec("edge2", null), integer("samples", "4", 1, 256),
                 color("color", "rgb(1, 1, 1)"), num("falloff", "0", 0, false, INF, false), num("ambient", "0", 0, false, INF, false));
