@@ -43,6 +43,9 @@ final class ObjectPanels implements StudioModel.Listener {
         this.window = window;
         window.model().addListener(this);
         navigator.onSelect(this::chosen);
+        // The dock honours minimum sizes: without one, the render view's long toolbar squeezes these to a sliver.
+        navigator.setMinimumSize(new java.awt.Dimension(240, 120));
+        properties.setMinimumSize(new java.awt.Dimension(240, 120));
         properties.writer(this::write);
     }
 
@@ -51,8 +54,8 @@ final class ObjectPanels implements StudioModel.Listener {
     PropertiesPanel properties() { return properties; }
 
     List<StudioPanel> panels() {
-        return List.of(new StudioPanel("navigator", "Navigator", navigator, 0, 0, 0.24, 0.4),
-                new StudioPanel("properties", "Properties", properties, 0, 0.4, 0.24, 0.35));
+        return List.of(new StudioPanel("navigator", "Navigator", navigator, 0, 0, 0.24, 0.35),
+                new StudioPanel("properties", "Properties", properties, 0, 0.35, 0.24, 0.4));
     }
 
     // ---------------------------------------------------------------- following the model

@@ -28,7 +28,9 @@ final class PropertyTypes {
 
         /** The range in words, as the compiler's messages write it ("≥ 0", "in [0, 1]"), or "" for any number. */
         String describe() {
-            if (low == Double.NEGATIVE_INFINITY && high == Double.POSITIVE_INFINITY) return "";
+            if ((type != Type.NUMBER && type != Type.INTEGER) || (low == Double.NEGATIVE_INFINITY && high == Double.POSITIVE_INFINITY)) {
+                return "";
+            }
             if (high == Double.POSITIVE_INFINITY) return (lowOpen ? "> " : "≥ ") + ScriptEdits.number(low);
             return "in " + (lowOpen ? "(" : "[") + ScriptEdits.number(low) + ", " + ScriptEdits.number(high) + (highOpen ? ")" : "]");
         }
