@@ -41,6 +41,8 @@ final class NavigatorPanel extends JPanel {
     private Node outline;
     private Consumer<Node> onSelect = n -> {};
     private boolean adjusting;
+    /** The keys of the nodes the user keeps open (the groups start open); a filter opens everything without changing it. */
+    private final Set<String> expanded = new HashSet<>(Set.of("Lights", "Entities"));
 
     NavigatorPanel() {
         super(new BorderLayout());
@@ -59,6 +61,11 @@ final class NavigatorPanel extends JPanel {
         tree.setShowsRootHandles(true);
         tree.getSelectionModel().setSelectionMode(TreeSelectionModel.SINGLE_TREE_SELECTION);
         tree.setCellRenderer(new Renderer());
+        tree.addTreeExpansionListener(new javax.swing.event.TreeExpansionListener() {
+            @Override public void treeExpanded(javax.swing.event.TreeExpansionEvent e) { remember(e.getPath(), true); }
+
+            @Override public void treeCollapsed(javax.swing.event.TreeExpansionEvent e) { remember(e.getPath(), false); }
+        });
         tree.addTreeSelectionListener(e -> {
             if (adjusting) return;
             Node n = selected();
@@ -110,17 +117,15 @@ final class NavigatorPanel extends JPanel {
         }
     }
 
-    private void rebuild() {
-        Set<String> expanded = new HashSet<>();
-        DefaultMutableTreeNode oldRoot = (DefaultMutableTreeNode) model.getRoot();
-        var e = tree.getExpandedDescendants(new TreePath(oldRoot));
-        if (e != null) {
-            while (e.hasMoreElements()) {
-                Object last = ((DefaultMutableTreeNode) e.nextElement().getLastPathComponent()).getUserObject();
-                if (last instanceof Node n) expanded.add(n.key());
-            }
+    private void remember(TreePath path, boolean open) {
+        if (adjusting || !filter.getText().isBlank()) return;
+        if (((DefaultMutableTreeNode) path.getLastPathComponent()).getUserObject() instanceof Node n) {
+            if (open) expanded.add(n.key());
+            else expanded.remove(n.key());
         }
-        boolean first = oldRoot.getUserObject() instanceof String;
+    }
+
+    private void rebuild() {
         Node wasSelected = selected();
         String text = filter.getText().trim().toLowerCase(Locale.ROOT);
         DefaultMutableTreeNode root = new DefaultMutableTreeNode(outline == null ? "no scene" : outline);
@@ -132,10 +137,7 @@ final class NavigatorPanel extends JPanel {
             collect(root, all);
             for (DefaultMutableTreeNode n : all) {
                 if (!(n.getUserObject() instanceof Node node) || n.isLeaf()) continue;
-                // The groups start open; a filter opens everything that matched.
-                boolean open = expanded.contains(node.key()) || !text.isEmpty()
-                        || (first && (node.kind() == Kind.ENTITIES || node.kind() == Kind.LIGHTS));
-                if (open) tree.expandPath(new TreePath(n.getPath()));
+                if (expanded.contains(node.key()) || !text.isEmpty()) tree.expandPath(new TreePath(n.getPath()));
             }
         } finally {
             adjusting = false;
