@@ -63,7 +63,7 @@ final class ObjectPanels implements StudioModel.Listener {
     @Override
     public void opened(ScriptDocument d) {
         ScriptEditor editor = window.editor(d);
-        if (editor != null) editor.area().addCaretListener(e -> caretMoved(d, e.getDot()));
+        if (editor != null) editor.area().addCaretListener(e -> caretMoved(d, e.getDot(), true));
     }
 
     @Override
@@ -81,12 +81,11 @@ final class ObjectPanels implements StudioModel.Listener {
         if (d != window.model().current() || result.scene() == null || result.sourceMap() == null) return;
         show(result, d);
         ScriptEditor editor = window.editor(d);
-        if (editor != null) caretMoved(d, editor.area().getCaretPosition());
+        if (editor != null) caretMoved(d, editor.area().getCaretPosition(), false);
     }
 
     private void show(CompileResult result, ScriptDocument d) {
         Node fresh = d == null || result == null || !d.resultIsCurrent() ? null : SceneOutline.of(result, d.content());
-        if (fresh == null && d != null && result != null && result.scene() == null) return;
         outline = fresh;
         map = fresh == null ? null : result.sourceMap();
         navigator.show(outline);
@@ -122,11 +121,17 @@ final class ObjectPanels implements StudioModel.Listener {
         select(d, n);
     }
 
-    private void caretMoved(ScriptDocument d, int caret) {
+    /**
+     * Selects the node of the object the caret is in. After a compile ({@code moved} false) a
+     * selected node that still holds the caret stays, so a CSG operation stays selected rather than
+     * its first operand; a caret the user moved selects the innermost object, unless it sits at the
+     * start of the selected node (where selecting that node put it).
+     */
+    private void caretMoved(ScriptDocument d, int caret, boolean moved) {
         if (ownCaret || d != window.model().current() || !d.resultIsCurrent() || outline == null) return;
         Node now = navigator.selected();
-        if (now != null && now.contains(caret)) return;
         Node n = SceneOutline.at(outline, caret);
+        if (now != null && now.contains(caret) && (!moved || caret == now.span().start() || n == null || n.key().equals(now.key()))) return;
         if (n == null) return;
         navigator.select(n.key());
         properties.show(n, map);
@@ -220,7 +225,7 @@ final class ObjectPanels implements StudioModel.Listener {
         } catch (ScriptEdits.Refused r) {
             return refuse(r.getMessage());
         }
-        String broken = ScriptEdits.breaks(d.source().name(), script, edit.applyTo(script));
+        String broken = ScriptEdits.breaks(d.source().name(), d.result().errorCount(), edit.applyTo(script));
         if (broken != null) return refuse("not changed: " + broken);
         apply(d, edit);
         properties.say("changed " + edit.what(), false);
@@ -316,7 +321,7 @@ final class ObjectPanels implements StudioModel.Listener {
         }
         boolean empty = written.substring(1, written.length() - 1).isBlank();
         ScriptEdits.Edit edit = new ScriptEdits.Edit(lights.end() - 1, lights.end() - 1, (empty ? "" : ", ") + literal, "a light");
-        String broken = ScriptEdits.breaks(d.source().name(), script, edit.applyTo(script));
+        String broken = ScriptEdits.breaks(d.source().name(), d.result().errorCount(), edit.applyTo(script));
         if (broken != null) {
             properties.say(refuse("no light inserted: " + broken), true);
             return;
@@ -341,8 +346,9 @@ final class ObjectPanels implements StudioModel.Listener {
         String tail = script.endsWith("\n") || script.isEmpty() ? "" : "\n";
         for (String form : forms) tries.add(new ScriptEdits.Edit(script.length(), script.length(), tail + form + "\n", what));
         String problem = null;
+        long errorsBefore = d.resultIsCurrent() ? d.result().errorCount() : ScriptEdits.errors(d.source().name(), script);
         for (ScriptEdits.Edit edit : tries) {
-            problem = ScriptEdits.breaks(d.source().name(), script, edit.applyTo(script));
+            problem = ScriptEdits.breaks(d.source().name(), errorsBefore, edit.applyTo(script));
             if (problem != null) continue;
             apply(d, edit);
             int start = edit.start() + edit.text().indexOf(edit.text().strip());

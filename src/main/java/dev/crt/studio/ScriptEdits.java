@@ -119,15 +119,18 @@ final class ScriptEdits {
         return line;
     }
 
+    private static final CompileOptions CHECK = new CompileOptions(0, List.of(), CompileOptions.DEFAULT_LOOP_BUDGET, Duration.ofSeconds(2));
+
+    /** How many errors the script has now. */
+    static long errors(String name, String script) { return CrtCompiler.compile(Source.of(name, script), CHECK).errorCount(); }
+
     /**
-     * Null when {@code edited} compiles with no more errors than {@code before} had, else the first new
-     * error as a sentence: an edit that would break the script is not made.
+     * Null when {@code edited} compiles with no more errors than the script had before the edit
+     * ({@code errorsBefore}), else the first error as a sentence: an edit that breaks the script is not made.
      */
-    static String breaks(String name, String before, String edited) {
-        CompileOptions quick = new CompileOptions(0, List.of(), CompileOptions.DEFAULT_LOOP_BUDGET, Duration.ofSeconds(2));
-        CompileResult was = CrtCompiler.compile(Source.of(name, before), quick);
-        CompileResult now = CrtCompiler.compile(Source.of(name, edited), quick);
-        if (now.errorCount() <= was.errorCount()) return null;
+    static String breaks(String name, long errorsBefore, String edited) {
+        CompileResult now = CrtCompiler.compile(Source.of(name, edited), CHECK);
+        if (now.errorCount() <= errorsBefore) return null;
         Diagnostic first = now.diagnostics().stream().filter(Diagnostic::isError).findFirst().orElseThrow();
         return "the script would not compile: " + first.span().line() + ":" + first.span().column() + ": " + first.message();
     }

@@ -33,7 +33,7 @@ class ScriptEditsTest {
         CompileResult r = compile(text);
         ScriptEdits.Edit e = ScriptEdits.setAttribute(text, r.sourceMap(), entity(r, entity), r.sourceMap().callOf(entity), attribute, literal);
         String edited = e.applyTo(text);
-        assertThat(ScriptEdits.breaks("e.crt", text, edited)).as(edited).isNull();
+        assertThat(ScriptEdits.breaks("e.crt", 0, edited)).as(edited).isNull();
         return edited;
     }
 
@@ -92,8 +92,11 @@ class ScriptEditsTest {
     @Test
     void anEditThatWouldBreakTheScriptIsCaught() {
         String text = "Scene { Sphere { radius -> 1 } }";
-        assertThat(ScriptEdits.breaks("e.crt", text, text.replace("1", "-1"))).contains("radius");
-        assertThat(ScriptEdits.breaks("e.crt", text, text.replace("1", "2"))).isNull();
+        assertThat(ScriptEdits.errors("e.crt", text)).isZero();
+        assertThat(ScriptEdits.breaks("e.crt", 0, text.replace("1", "-1"))).contains("radius");
+        assertThat(ScriptEdits.breaks("e.crt", 0, text.replace("1", "2"))).isNull();
+        // A script that already had an error may be edited as long as the edit adds none.
+        assertThat(ScriptEdits.breaks("e.crt", 1, "x = nothing\n" + text.replace("1", "2"))).isNull();
     }
 
     @Test
