@@ -97,6 +97,8 @@ final class StudioWindow implements StudioModel.Listener {
     private final TransferHandler fileDrop;
     private IntConsumer onExit = code -> {};
     private RenderJob job;
+    /** The Navigator and Properties panels and the Insert menu (issue 8). */
+    private ObjectPanels objects;
     private RenderJob.Result lastRender;
     private ScriptDocument lastRenderDocument;
     private boolean askingAboutDisk;
@@ -184,6 +186,8 @@ final class StudioWindow implements StudioModel.Listener {
 
     Action action(String name) { return actions.get(name); }
 
+    ObjectPanels objects() { return objects; }
+
     void onExit(IntConsumer listener) { onExit = listener; }
 
     /** Shows the window, offers to recover unsaved work of a studio that died, and opens {@code files}. */
@@ -217,8 +221,10 @@ final class StudioWindow implements StudioModel.Listener {
         renderPanel.add(renderBar, BorderLayout.NORTH);
         renderPanel.add(renderView, BorderLayout.CENTER);
 
-        dock.register(new StudioPanel("script", "Script", scriptPanel, 0, 0, 0.5, 0.75));
-        dock.register(new StudioPanel("render", "Render", renderPanel, 0.5, 0, 0.5, 0.75));
+        dock.register(new StudioPanel("script", "Script", scriptPanel, 0.24, 0, 0.38, 0.75));
+        dock.register(new StudioPanel("render", "Render", renderPanel, 0.62, 0, 0.38, 0.75));
+        objects = new ObjectPanels(this);
+        objects.panels().forEach(dock::register);
         dock.register(new StudioPanel("console", "Console", console, 0, 0.75, 1, 0.25));
     }
 
@@ -316,6 +322,7 @@ final class StudioWindow implements StudioModel.Listener {
         originalShadingItem.getAccessibleContext().setAccessibleName("Look of CRT 2015");
         render.add(originalShadingItem);
         bar.add(render);
+        bar.add(objects.insertMenu());
         bar.add(menu("Help", KeyEvent.VK_H, "shortcuts", "about"));
         return bar;
     }
@@ -743,6 +750,7 @@ final class StudioWindow implements StudioModel.Listener {
                 job = null;
                 lastRender = r;
                 renderView.show(r.picture());
+                objects.rendered(r);
                 progress.setVisible(false);
                 RenderStats stats = r.renderer().stats();
                 Settings s = r.scene().settings();
