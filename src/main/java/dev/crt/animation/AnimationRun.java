@@ -8,6 +8,7 @@ import dev.crt.lang.DiagnosticFormatter;
 import dev.crt.lang.Source;
 import dev.crt.render.RenderCancelledException;
 import dev.crt.render.RenderMonitor;
+import dev.crt.render.RenderStats;
 import dev.crt.scene.Scene;
 import dev.crt.image.FrameBuffer;
 import dev.crt.scene.Settings;
@@ -49,8 +50,11 @@ public final class AnimationRun {
         /** {@code done} of {@code of} pixels of frame {@code frame} are traced; called often. */
         default void rendering(int frame, long done, long of) {}
 
-        /** Frame {@code frame} is in its file; {@code image} is its picture in linear light, with the settings it was made with. */
-        default void written(Frame frame, FrameBuffer image, Settings settings) {}
+        /**
+         * Frame {@code frame} is in its file; {@code image} is its picture in linear light, with the
+         * settings it was made with and what tracing it cost.
+         */
+        default void written(Frame frame, FrameBuffer image, Settings settings, RenderStats stats) {}
 
         /** Frame {@code frame} is over: written, or failed or cancelled when {@code written} is false. */
         default void finished(int frame, boolean written) {}
@@ -132,7 +136,7 @@ public final class AnimationRun {
                 public boolean isCancelled() { return cancel.getAsBoolean() || stopping.get(); }
             };
             FrameJob.Outcome outcome = FrameJob.run(scene, frame.file(), threadsPerFrame, monitor,
-                    image -> progress.written(frame, image, scene.settings()));
+                    (image, stats) -> progress.written(frame, image, scene.settings(), stats));
             totals.add(compileNanos, outcome);
             written = true;
         } catch (FrameFailure f) {

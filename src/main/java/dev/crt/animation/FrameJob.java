@@ -12,6 +12,7 @@ import java.nio.file.Path;
 import java.util.LinkedHashMap;
 import java.util.Locale;
 import java.util.Map;
+import java.util.function.BiConsumer;
 
 /** Renders one compiled scene and writes it atomically to an image file: the unit render and animate share. */
 public final class FrameJob {
@@ -26,12 +27,12 @@ public final class FrameJob {
      * {@link FrameFailure}; a cancel through {@code monitor} leaves no file.
      */
     public static Outcome run(Scene scene, Path out, int threads, RenderMonitor monitor) throws FrameFailure {
-        return run(scene, out, threads, monitor, image -> {});
+        return run(scene, out, threads, monitor, (image, stats) -> {});
     }
 
-    /** As {@link #run(Scene, Path, int, RenderMonitor)}, handing the finished picture to {@code written} after the write. */
+    /** As {@link #run(Scene, Path, int, RenderMonitor)}, handing the picture and its counts to {@code written} once it is in its file. */
     public static Outcome run(Scene scene, Path out, int threads, RenderMonitor monitor,
-            java.util.function.Consumer<FrameBuffer> written) throws FrameFailure {
+            BiConsumer<FrameBuffer, RenderStats> written) throws FrameFailure {
         int w = scene.settings().width(), h = scene.settings().height();
         if ((long) w * h > FrameBuffer.MAX_PIXELS) {
             throw new FrameFailure(FrameFailure.Kind.SETTINGS, String.format(Locale.ROOT,
@@ -50,7 +51,7 @@ public final class FrameJob {
             throw new FrameFailure(FrameFailure.Kind.FILE, m == null || m.isBlank() ? e.getClass().getSimpleName() : m);
         }
         long writeNanos = System.nanoTime() - start;
-        written.accept(image);
+        written.accept(image, renderer.stats());
         return new Outcome(renderer.stats(), writeNanos);
     }
 

@@ -79,6 +79,9 @@ final class StudioWindow implements StudioModel.Listener {
     private final RenderView renderView = new RenderView();
     private final JLabel renderInfo = new JLabel("F5 renders the current script");
     private final ConsolePanel console = new ConsolePanel();
+    private final SessionSettings session = new SessionSettings();
+    private final Throughput throughput = new Throughput();
+    private final AnimationPanel animation = new AnimationPanel(model, session, throughput, console);
     private final JLabel caretStatus = new JLabel("–");
     private final JLabel renderStatus = new JLabel(" ");
     private final JProgressBar progress = new JProgressBar(0, 1000);
@@ -168,6 +171,8 @@ final class StudioWindow implements StudioModel.Listener {
 
     RenderView renderView() { return renderView; }
 
+    AnimationPanel animation() { return animation; }
+
     JLabel renderInfo() { return renderInfo; }
 
     JLabel caretStatus() { return caretStatus; }
@@ -220,6 +225,9 @@ final class StudioWindow implements StudioModel.Listener {
         dock.register(new StudioPanel("script", "Script", scriptPanel, 0, 0, 0.5, 0.75));
         dock.register(new StudioPanel("render", "Render", renderPanel, 0.5, 0, 0.5, 0.75));
         dock.register(new StudioPanel("console", "Console", console, 0, 0.75, 1, 0.25));
+        // Stacked behind the render view: frames are pictures too, and want its room.
+        dock.register(new StudioPanel("animation", "Animation", animation, 0.5, 0, 0.5, 0.75));
+        model.addListener(animation);
     }
 
     private JButton button(String action) {
@@ -269,6 +277,8 @@ final class StudioWindow implements StudioModel.Listener {
                 () -> dock.dockable("render").toFront());
         action("showConsole", "Console", KeyStroke.getKeyStroke(KeyEvent.VK_3, InputEvent.ALT_DOWN_MASK),
                 () -> dock.dockable("console").toFront());
+        action("showAnimation", "Animation", KeyStroke.getKeyStroke(KeyEvent.VK_7, InputEvent.ALT_DOWN_MASK),
+                () -> dock.dockable("animation").toFront());
         action("render", "Render", KeyStroke.getKeyStroke(KeyEvent.VK_F5, 0), this::render);
         action("cancel", "Cancel", KeyStroke.getKeyStroke(KeyEvent.VK_ESCAPE, 0), this::cancelRender);
         action("zoomFit", "Fit", ctrl(KeyEvent.VK_0), renderView::zoomToFit);
@@ -302,7 +312,7 @@ final class StudioWindow implements StudioModel.Listener {
             themes.add(item);
             view.add(item);
         }
-        add(view, "toggleTheme", null, "showScript", "showRender", "showConsole", null, "resetLayout");
+        add(view, "toggleTheme", null, "showScript", "showRender", "showConsole", "showAnimation", null, "resetLayout");
         bar.add(view);
         JMenu render = menu("Render", KeyEvent.VK_R, "render", "cancel", null, "zoomFit", "zoomActual", null, "saveImage");
         // The check box shows the setting; the action behind it toggles it, from the menu or the key.
@@ -590,6 +600,7 @@ final class StudioWindow implements StudioModel.Listener {
             if (!close(d)) return;
         }
         cancelRender();
+        animation.dispose();
         settings.maximized = (frame.getExtendedState() & Frame.MAXIMIZED_BOTH) != 0;
         if (!settings.maximized) settings.bounds = frame.getBounds();
         try {
@@ -724,7 +735,7 @@ final class StudioWindow implements StudioModel.Listener {
         renderStatus.setText("rendering " + d.name() + "…");
         RenderJob[] self = new RenderJob[1];
         Shading shading = originalShadingItem.isSelected() ? Shading.ORIGINAL : null;
-        self[0] = new RenderJob(d.source(), compiled, shading, new RenderJob.Listener() {
+        self[0] = new RenderJob(d.source(), compiled, shading, session, new RenderJob.Listener() {
             @Override public void picture(java.awt.image.BufferedImage image, boolean coarse) {
                 if (job != self[0]) return;
                 renderView.show(image);
@@ -745,6 +756,8 @@ final class StudioWindow implements StudioModel.Listener {
                 renderView.show(r.picture());
                 progress.setVisible(false);
                 RenderStats stats = r.renderer().stats();
+                long end = System.nanoTime();
+                throughput.record(stats.totalRays(), end - stats.renderNanos(), end);
                 Settings s = r.scene().settings();
                 String summary = String.format("%d×%d in %.2f s, %.1f Mrays/s, first picture after %d ms", s.width(), s.height(),
                         r.totalNanos() / 1e9, stats.megaRaysPerSecond(), r.firstPictureNanos() / 1_000_000);
