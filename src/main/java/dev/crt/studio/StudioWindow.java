@@ -82,6 +82,7 @@ final class StudioWindow implements StudioModel.Listener {
     private final SessionSettings session = new SessionSettings();
     private final Throughput throughput = new Throughput();
     private final AnimationPanel animation = new AnimationPanel(model, session, throughput, console);
+    private final SystemPanel system = new SystemPanel(throughput);
     private final JLabel caretStatus = new JLabel("–");
     private final JLabel renderStatus = new JLabel(" ");
     private final JProgressBar progress = new JProgressBar(0, 1000);
@@ -173,6 +174,8 @@ final class StudioWindow implements StudioModel.Listener {
 
     AnimationPanel animation() { return animation; }
 
+    SystemPanel system() { return system; }
+
     JLabel renderInfo() { return renderInfo; }
 
     JLabel caretStatus() { return caretStatus; }
@@ -228,6 +231,7 @@ final class StudioWindow implements StudioModel.Listener {
         // Stacked behind the render view: frames are pictures too, and want its room.
         dock.register(new StudioPanel("animation", "Animation", animation, 0.5, 0, 0.5, 0.75));
         model.addListener(animation);
+        dock.register(new StudioPanel("system", "System", system, 0, 0.75, 1, 0.25));
     }
 
     private JButton button(String action) {
@@ -279,6 +283,8 @@ final class StudioWindow implements StudioModel.Listener {
                 () -> dock.dockable("console").toFront());
         action("showAnimation", "Animation", KeyStroke.getKeyStroke(KeyEvent.VK_7, InputEvent.ALT_DOWN_MASK),
                 () -> dock.dockable("animation").toFront());
+        action("showSystem", "System", KeyStroke.getKeyStroke(KeyEvent.VK_8, InputEvent.ALT_DOWN_MASK),
+                () -> dock.dockable("system").toFront());
         action("render", "Render", KeyStroke.getKeyStroke(KeyEvent.VK_F5, 0), this::render);
         action("cancel", "Cancel", KeyStroke.getKeyStroke(KeyEvent.VK_ESCAPE, 0), this::cancelRender);
         action("zoomFit", "Fit", ctrl(KeyEvent.VK_0), renderView::zoomToFit);
@@ -312,7 +318,7 @@ final class StudioWindow implements StudioModel.Listener {
             themes.add(item);
             view.add(item);
         }
-        add(view, "toggleTheme", null, "showScript", "showRender", "showConsole", "showAnimation", null, "resetLayout");
+        add(view, "toggleTheme", null, "showScript", "showRender", "showConsole", "showAnimation", "showSystem", null, "resetLayout");
         bar.add(view);
         JMenu render = menu("Render", KeyEvent.VK_R, "render", "cancel", null, "zoomFit", "zoomActual", null, "saveImage");
         // The check box shows the setting; the action behind it toggles it, from the menu or the key.

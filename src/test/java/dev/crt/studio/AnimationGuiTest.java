@@ -196,4 +196,28 @@ class AnimationGuiTest {
             }
         }
     }
+
+    @Test
+    void systemChartsSampleWhileShowingAndChartTheRaysOfRenders() throws Exception {
+        AnimationPanel animation = openAnimation(scene("slow-sphere.crt"));
+        SystemPanel system = onEdt(() -> studio.system());
+        assertThat(onEdt(system::isSampling)).as("hidden behind the console: no sampling").isFalse();
+        keys.press(KeyEvent.VK_8, KeyEvent.VK_ALT);
+        waitFor("the System panel to show", 10, system::isShowing);
+        waitFor("three samples of every series", 10, () -> Stream.of(SystemPanel.CPU_SYSTEM, SystemPanel.CPU_CRT,
+                SystemPanel.MEMORY_SYSTEM, SystemPanel.HEAP_USED, SystemPanel.HEAP_COMMITTED, SystemPanel.THROUGHPUT)
+                .allMatch(s -> system.points(s) >= 3));
+        assertThat(onEdt(() -> system.latest(SystemPanel.HEAP_COMMITTED))).isGreaterThanOrEqualTo(
+                onEdt(() -> system.latest(SystemPanel.HEAP_USED))).isPositive();
+        assertThat(onEdt(() -> system.latest(SystemPanel.MEMORY_SYSTEM))).isPositive();
+        assertThat(onEdt(() -> system.highest(SystemPanel.THROUGHPUT))).isZero();
+        // Frames rendered in the Animation panel (still showing: it is in another stack) count as throughput.
+        window.spinner("animLast").enterTextAndCommit("3");
+        window.button("animRender").click();
+        waitFor("frames 0..3", 30, () -> !animation.isRendering() && animation.renderedFrames().size() == 4);
+        waitFor("the rays of the frames on the throughput chart", 10, () -> system.highest(SystemPanel.THROUGHPUT) > 0);
+        keys.press(KeyEvent.VK_3, KeyEvent.VK_ALT);
+        waitFor("the System panel to hide behind the console", 10, () -> !system.isShowing());
+        assertThat(onEdt(system::isSampling)).isFalse();
+    }
 }
