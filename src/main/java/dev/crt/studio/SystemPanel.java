@@ -41,9 +41,9 @@ final class SystemPanel extends JPanel {
     private final Throughput throughput;
     private final com.sun.management.OperatingSystemMXBean os =
             (com.sun.management.OperatingSystemMXBean) ManagementFactory.getOperatingSystemMXBean();
-    private final XYChart cpu = chart("CPU load, %");
-    private final XYChart memory = chart("Memory, MiB");
-    private final XYChart rays = chart("Render throughput, Mrays/s");
+    private final XYChart cpu = chart("CPU load (%)");
+    private final XYChart memory = chart("Memory (MiB)");
+    private final XYChart rays = chart("Render throughput (Mrays/s)");
     private final List<XChartPanel<XYChart>> panels;
     private final Timer sampler = new Timer(1000, e -> sample());
 
@@ -81,8 +81,8 @@ final class SystemPanel extends JPanel {
     }
 
     private static XYChart chart(String title) {
-        XYChart c = new XYChartBuilder().width(400).height(200).title(title + ", last " + WINDOW_SECONDS / 60
-                + " minutes (seconds, 0 is now)").build();
+        XYChart c = new XYChartBuilder().width(400).height(200).title(title).build();
+        c.getStyler().setYAxisDecimalPattern("#,##0.##");
         c.getStyler().setXAxisTitleVisible(false);
         c.getStyler().setYAxisTitleVisible(false);
         c.getStyler().setChartTitleFont(new java.awt.Font(java.awt.Font.SANS_SERIF, java.awt.Font.BOLD, 11));
