@@ -32,14 +32,18 @@ final class SessionSettings implements UnaryOperator<Scene> {
     /** {@code scene} with this session's settings in place of the script's. */
     @Override
     public Scene apply(Scene scene) {
-        if (isEmpty()) return scene;
-        Settings s = scene.settings();
+        return isEmpty() ? scene : scene.withSettings(apply(scene.settings()));
+    }
+
+    /** {@code s} with this session's settings in place of the script's. */
+    Settings apply(Settings s) {
+        if (isEmpty()) return s;
         Set<String> given = new HashSet<>(s.given());
         if (recursionDepth != null) given.add("recursiondepth");
-        return scene.withSettings(new Settings(s.title(), s.author(), s.date(), s.notes(), s.lights(), s.camera(),
+        return new Settings(s.title(), s.author(), s.date(), s.notes(), s.lights(), s.camera(),
                 s.background(), or(supersampling, s.supersampling()), or(dofSamples, s.dofSamples()),
                 or(recursionDepth, s.recursionDepth()), gamma != null ? gamma : s.gamma(), or(width, s.width()),
-                or(height, s.height()), s.sampler(), s.seed(), s.noise(), s.shading(), given));
+                or(height, s.height()), s.sampler(), s.seed(), s.noise(), s.shading(), given);
     }
 
     private static int or(Integer session, int script) { return session != null ? session : script; }

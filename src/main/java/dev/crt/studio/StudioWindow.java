@@ -290,6 +290,8 @@ final class StudioWindow implements StudioModel.Listener {
         action("zoomFit", "Fit", ctrl(KeyEvent.VK_0), renderView::zoomToFit);
         action("zoomActual", "1:1", ctrl(KeyEvent.VK_1), renderView::zoomActualSize);
         action("saveImage", "Save image as…", ctrlShift(KeyEvent.VK_E), this::saveImage);
+        action("sceneSettings", "Settings…", KeyStroke.getKeyStroke(KeyEvent.VK_S, InputEvent.CTRL_DOWN_MASK | InputEvent.ALT_DOWN_MASK),
+                this::sceneSettings);
         action("renderOnSave", "Render on save", ctrlShift(KeyEvent.VK_F5), () -> {
             settings.renderOnSave = !settings.renderOnSave;
             renderOnSaveItem.setSelected(settings.renderOnSave);
@@ -320,7 +322,8 @@ final class StudioWindow implements StudioModel.Listener {
         }
         add(view, "toggleTheme", null, "showScript", "showRender", "showConsole", "showAnimation", "showSystem", null, "resetLayout");
         bar.add(view);
-        JMenu render = menu("Render", KeyEvent.VK_R, "render", "cancel", null, "zoomFit", "zoomActual", null, "saveImage");
+        JMenu render = menu("Render", KeyEvent.VK_R, "render", "cancel", null, "zoomFit", "zoomActual", null, "saveImage",
+                "sceneSettings");
         // The check box shows the setting; the action behind it toggles it, from the menu or the key.
         renderOnSaveItem.setText("Render on save");
         renderOnSaveItem.setAccelerator((KeyStroke) actions.get("renderOnSave").getValue(Action.ACCELERATOR_KEY));
@@ -813,6 +816,14 @@ final class StudioWindow implements StudioModel.Listener {
     }
 
     boolean isRendering() { return job != null; }
+
+    /** Render → Settings…: the scene settings, into the script or for this session. */
+    private void sceneSettings() {
+        ScriptDocument d = model.current();
+        ScriptEditor editor = d == null ? null : editors.get(d);
+        if (editor == null) return;
+        new SceneSettingsDialog(frame, d, editor.area(), session, m -> console.log(ConsolePanel.Kind.INFO, m)).setVisible(true);
+    }
 
     private void pickPixel(int x, int y) {
         RenderJob.Result r = lastRender;

@@ -23,7 +23,9 @@ import javax.imageio.ImageReader;
 import javax.imageio.stream.ImageInputStream;
 import org.assertj.swing.core.BasicRobot;
 import org.assertj.swing.core.Robot;
+import org.assertj.swing.fixture.DialogFixture;
 import org.assertj.swing.fixture.FrameFixture;
+import org.assertj.swing.fixture.JOptionPaneFixture;
 import org.assertj.swing.fixture.JFileChooserFixture;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeAll;
@@ -76,6 +78,15 @@ class AnimationGuiTest {
 
     /** Opens {@code file} and brings the Animation panel to the front with its key, Alt+7. */
     private AnimationPanel openAnimation(Path file) throws IOException {
+        open(file);
+        keys.press(KeyEvent.VK_7, KeyEvent.VK_ALT);
+        AnimationPanel panel = onEdt(() -> studio.animation());
+        waitFor("the Animation panel to show", 10, panel::isShowing);
+        return panel;
+    }
+
+    /** Opens {@code file} and waits for the editor to hold the focus, as a person would before typing. */
+    private void open(Path file) throws IOException {
         studio = GuiTestSupport.openStudio(temp.resolve("home"), List.of(file));
         window = new FrameFixture(robot, studio.frame());
         int[] steady = {0};
@@ -84,10 +95,6 @@ class AnimationGuiTest {
             steady[0] = e != null && e.area().isFocusOwner() ? steady[0] + 1 : 0;
             return steady[0] >= 25;
         });
-        keys.press(KeyEvent.VK_7, KeyEvent.VK_ALT);
-        AnimationPanel panel = onEdt(() -> studio.animation());
-        waitFor("the Animation panel to show", 10, panel::isShowing);
-        return panel;
     }
 
     private static BufferedImage expected(Path file, int t) throws IOException {
@@ -219,5 +226,72 @@ class AnimationGuiTest {
         keys.press(KeyEvent.VK_3, KeyEvent.VK_ALT);
         waitFor("the System panel to hide behind the console", 10, () -> !system.isShowing());
         assertThat(onEdt(system::isSampling)).isFalse();
+    }
+
+    private DialogFixture openSettings() {
+        ScriptDocument d = onEdt(() -> studio.model().current());
+        waitFor("the script to be compiled", 10, () -> d.resultIsCurrent() && d.result().scene() != null);
+        keys.press(KeyEvent.VK_S, KeyEvent.VK_CONTROL, KeyEvent.VK_ALT);
+        DialogFixture dialog = window.dialog();
+        dialog.requireVisible();
+        // Without a window manager the dialog's focus arrives a moment after it maps; clicks before that can be lost.
+        waitFor("the dialog to hold the focus", 10, () -> dialog.target().isFocused());
+        return dialog;
+    }
+
+    @Test
+    void theSettingsDialogWritesTheSettingsBlockAsOneEditThatCtrlZTakesBack() throws Exception {
+        Path file = scene("two-spheres.crt");
+        String original = Files.readString(file);
+        open(file);
+        DialogFixture dialog = openSettings();
+        dialog.spinner("settingsWidth").requireValue(160);
+        dialog.spinner("settingsWidth").enterTextAndCommit("200");
+        dialog.spinner("settingsGamma").enterTextAndCommit("2.2");
+        dialog.radioButton("settingsToScript").check();
+        dialog.button("settingsOk").click();
+        String expected = original.replace("width -> 160", "width -> 200").replace(
+                "background -> Background { color -> rgb(0.1, 0.1, 0.2) }",
+                "background -> Background { color -> rgb(0.1, 0.1, 0.2) }\n  gamma -> 2.2");
+        waitFor("the new settings in the text", 5, () -> studio.model().current().content().equals(expected));
+        ScriptDocument d = onEdt(() -> studio.model().current());
+        waitFor("the new text to compile", 10, () -> d.resultIsCurrent() && d.result().scene() != null
+                && d.result().scene().settings().width() == 200 && d.result().scene().settings().gamma() == 2.2);
+        assertThat(onEdt(() -> d.result().hasErrors())).isFalse();
+        new org.assertj.swing.fixture.JTextComponentFixture(robot, onEdt(() -> studio.currentEditor().area())).click();
+        waitFor("the editor to have the focus", 10, () -> studio.currentEditor().area().isFocusOwner());
+        keys.press(KeyEvent.VK_Z, KeyEvent.VK_CONTROL);
+        waitFor("one Ctrl+Z to restore the text exactly", 5, () -> d.content().equals(original));
+    }
+
+    @Test
+    void aComputedSettingIsRefusedAndTheSessionOnlyChoiceRendersWithoutTouchingTheScript() throws Exception {
+        Path file = temp.resolve("computed.crt");
+        String text = Files.readString(scene("two-spheres.crt")).replace("width -> 160", "width -> w * 2");
+        Files.writeString(file, "w = 80\n" + text);
+        open(file);
+        DialogFixture dialog = openSettings();
+        dialog.spinner("settingsWidth").enterTextAndCommit("64");
+        dialog.spinner("settingsHeight").enterTextAndCommit("48");
+        dialog.radioButton("settingsToScript").check();
+        dialog.button("settingsOk").click();
+        JOptionPaneFixture refusal = dialog.optionPane();
+        refusal.requireErrorMessage();
+        assertThat(onEdt(() -> refusal.target().getMessage().toString())).isEqualTo("width is computed by the expression "
+                + "'w * 2' at 4:12, not written as a number: change it in the script, or apply the settings to this session only");
+        refusal.okButton().click();
+        assertThat(onEdt(() -> studio.model().current().content())).isEqualTo("w = 80\n" + text);
+
+        dialog.radioButton("settingsToSession").check();
+        waitFor("the dialog to hold the focus again", 10, () -> dialog.target().isFocused());
+        dialog.button("settingsOk").click();
+        waitFor("the dialog to close", 10, () -> !dialog.target().isVisible());
+        new org.assertj.swing.fixture.JTextComponentFixture(robot, onEdt(() -> studio.currentEditor().area())).click();
+        waitFor("the editor to have the focus", 10, () -> studio.currentEditor().area().isFocusOwner());
+        keys.press(KeyEvent.VK_F5);
+        waitFor("the render", 20, () -> studio.lastRender() != null);
+        assertThat(onEdt(() -> studio.lastRender().picture().getWidth())).isEqualTo(64);
+        assertThat(onEdt(() -> studio.lastRender().picture().getHeight())).isEqualTo(48);
+        assertThat(onEdt(() -> studio.model().current().content())).isEqualTo("w = 80\n" + text);
     }
 }
