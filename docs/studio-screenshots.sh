@@ -10,8 +10,9 @@ for tool in Xvfb xdotool import; do
   command -v "$tool" >/dev/null 2>&1 || { echo "studio-screenshots: $tool is needed" >&2; exit 3; }
 done
 
-display=""
-for n in $(seq 150 199); do
+# SCREENSHOT_DISPLAY=N uses display :N (it must be free); else the first free one from :150.
+display="${SCREENSHOT_DISPLAY:-}"
+[ -n "$display" ] || for n in $(seq 150 199); do
   if [ ! -e "/tmp/.X11-unix/X$n" ] && [ ! -e "/tmp/.X$n-lock" ]; then display=$n; break; fi
 done
 [ -n "$display" ] || { echo "studio-screenshots: no free X display" >&2; exit 1; }
@@ -54,4 +55,35 @@ shot dark-error 3
 xdotool type --delay 40 $'\nScene { Box { c'
 xdotool key ctrl+space
 shot dark-completion 2
+xdotool key Escape
+
+# The scene as objects (Navigator, Properties, Insert): a second studio on a scene with CSG, a
+# macro and a shared material, fresh settings so that the default layout is the one photographed.
+kill "$studio" 2>/dev/null || true
+wait "$studio" 2>/dev/null || true
+sed 's/width -> 160 height -> 120/width -> 480 height -> 360/' "$here/src/test/resources/dev/crt/studio/objects.crt" > "$work/objects.crt"
+XDG_CONFIG_HOME="$work/config2" XDG_STATE_HOME="$work/state2" \
+  CRT_JAVA_OPTS="-Xss16m -Djava.util.prefs.userRoot=$work/prefs2" "$here/crt" studio "$work/objects.crt" &
+studio=$!
+sleep "${STUDIO_START_WAIT:-12}"
+# A click below the script's last line gives the editor the focus (there is no window manager).
+xdotool mousemove 500 540 click 1
+xdotool key F5
+sleep "${RENDER_WAIT:-15}"
+# Expand the CSG node and select the ball (rows of the fresh default layout's tree).
+xdotool mousemove 33 251 click 1
+sleep 1
+xdotool mousemove 104 232 click 1
+shot objects-navigator 3
+# The colour's "…" button opens the colour chooser with the 0–1 values.
+xdotool mousemove 200 446 click 1
+shot objects-color 3
+xdotool key Escape
+sleep 1
+xdotool mousemove 113 93 click 1
+xdotool type --delay 60 "sph"
+shot objects-filter 2
+xdotool key ctrl+a BackSpace
+xdotool mousemove 222 10 click 1
+shot objects-insert 2
 xdotool key Escape

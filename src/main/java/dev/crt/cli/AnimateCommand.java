@@ -1,7 +1,14 @@
 package dev.crt.cli;
 
+import dev.crt.animation.AnimationRun;
+import dev.crt.animation.AnimationTotals;
+import dev.crt.animation.FrameFailure;
+import dev.crt.animation.FrameRange;
+import dev.crt.animation.FramePattern;
+import dev.crt.animation.GifAssembly;
 import dev.crt.lang.CompileOptions;
 import dev.crt.lang.Source;
+import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -114,13 +121,18 @@ final class AnimateCommand implements Callable<Integer> {
 
         int threads = renderOptions.threads > 0 ? renderOptions.threads : Runtime.getRuntime().availableProcessors();
         AnimationRun run = new AnimationRun(source, options, renderOptions::applyTo, jobs, Math.max(1, threads / jobs),
-                keepGoing, err);
+                keepGoing, text -> {
+                    synchronized (err) {
+                        err.print(text);
+                        err.flush();
+                    }
+                });
         AnimationRun.Outcome outcome;
         int exit;
         // Ctrl-C waits for the summary too, so a cancelled run still says what it left.
         try (Cancellation cancel = Cancellation.install()) {
             try (AnimationProgress progress = AnimationProgress.start(todo.size(), renderOptions.quiet, err)) {
-                outcome = run.run(todo, cancel, progress);
+                outcome = run.run(todo, cancel::isCancelled, progress);
             }
             exit = report(plan, outcome, skipped, err);
             err.flush();
@@ -131,14 +143,18 @@ final class AnimateCommand implements Callable<Integer> {
                 err.println("crt: no GIF written: none of the frames exists");
                 exit = Math.max(exit, ExitCode.FILE_ERROR);
             } else {
-                GifAssembly.write(gif, frameFiles, plan.fps());
+                try {
+                    GifAssembly.write(gif, frameFiles, plan.fps());
+                } catch (IOException e) {
+                    throw new CliFailure(ExitCode.FILE_ERROR, "cannot write " + gif + ": " + ScriptCompilation.plain(e));
+                }
                 if (!renderOptions.quiet) {
                     err.printf(Locale.ROOT, "crt: wrote %s (%d frames at %s fps)%n", gif, frameFiles.size(), plan.fps());
                 }
             }
         }
         if (renderOptions.stats) {
-            outcome.totals().print(out, skipped, outcome.failures().size(), outcome.wallNanos());
+            printTotals(out, outcome.totals(), skipped, outcome.failures().size(), outcome.wallNanos());
         }
         out.flush();
         err.flush();
@@ -233,13 +249,45 @@ final class AnimateCommand implements Callable<Integer> {
         int exit = ExitCode.OK;
         for (AnimationRun.Failure f : failures) {
             err.printf("crt: frame %d failed: %s%n", f.frame(), f.reason());
-            exit = Math.max(exit, f.exitCode());
+            exit = Math.max(exit, exitCode(f.kind()));
         }
         if (!keepGoing) {
             err.println("crt: stopped at the first failure; the frames written are complete: "
                     + "rerun with --resume once it is fixed, or use --keep-going to render the other frames anyway");
         }
         return exit;
+    }
+
+    /** The exit code a frame failure calls for. */
+    static int exitCode(FrameFailure.Kind kind) {
+        return switch (kind) {
+            case SCRIPT -> ExitCode.SCRIPT_ERROR;
+            case SETTINGS -> ExitCode.USAGE;
+            case FILE -> ExitCode.FILE_ERROR;
+            case MEMORY -> ExitCode.INTERNAL_ERROR;
+        };
+    }
+
+    /**
+     * The {@code --stats} table: the render command's table over all frames, then frame counts,
+     * the wall-clock time and the share of frame time spent outside tracing (compile, BVH, write).
+     */
+    private static void printTotals(PrintWriter out, AnimationTotals totals, int skipped, int failed, long wallNanos) {
+        long frames = totals.frames();
+        long compileNanos = totals.compileNanos();
+        dev.crt.animation.FrameJob.Outcome sum = totals.sum();
+        out.println("times and rays summed over " + frames + (frames == 1 ? " frame" : " frames"));
+        StatsReport.print(out, compileNanos, sum);
+        long renderNanos = sum.stats().renderNanos();
+        long frameNanos = compileNanos + sum.stats().buildNanos() + renderNanos + sum.writeNanos();
+        out.println("frames");
+        out.printf(Locale.ROOT, "  %-10s %14d%n", "rendered", frames);
+        out.printf(Locale.ROOT, "  %-10s %14d%n", "skipped", skipped);
+        out.printf(Locale.ROOT, "  %-10s %14d%n", "failed", failed);
+        out.printf(Locale.ROOT, "  %-10s %14.3f s%n", "wall clock", wallNanos / 1e9);
+        out.printf(Locale.ROOT, "  %-10s %14.2f frames/s%n", "speed", AnimationTotals.framesPerSecond(frames, wallNanos));
+        out.printf(Locale.ROOT, "  %-10s %14.1f %% (compile, bvh build and write of frame time)%n", "overhead",
+                frameNanos == 0 ? 0 : 100.0 * (frameNanos - renderNanos) / frameNanos);
     }
 
     private ParameterException usage(String message) { return new ParameterException(spec.commandLine(), message); }

@@ -1,5 +1,6 @@
 package dev.crt.cli;
 
+import dev.crt.animation.AnimationRun;
 import java.io.PrintWriter;
 import java.util.Locale;
 import java.util.Map;
@@ -10,7 +11,7 @@ import java.util.concurrent.ConcurrentSkipListMap;
  * frames being rendered; in a log (a render farm's output file) one line per finished frame with
  * the count and the ETA; nothing when quiet.
  */
-final class AnimationProgress implements AutoCloseable {
+final class AnimationProgress implements AutoCloseable, AnimationRun.Listener {
     private enum Mode { BAR, LINES, NONE }
 
     private final Mode mode;
@@ -37,20 +38,23 @@ final class AnimationProgress implements AutoCloseable {
         return new AnimationProgress(Mode.LINES, Progress.NONE, err, total);
     }
 
-    void started(int frame) {
+    @Override
+    public void started(int frame) {
         running.put(frame, 0);
         showRunning();
     }
 
     /** Called from render threads, often: the bar's text changes only when a percentage does. */
-    void rendering(int frame, long done, long of) {
+    @Override
+    public void rendering(int frame, long done, long of) {
         int percent = of == 0 ? 0 : (int) (100 * done / of);
         Integer before = running.put(frame, percent);
         if (before == null || before != percent) showRunning();
     }
 
     /** Frame {@code frame} is over: written, or failed when {@code written} is false. */
-    synchronized void finished(int frame, boolean written) {
+    @Override
+    public synchronized void finished(int frame, boolean written) {
         running.remove(frame);
         finished++;
         if (mode == Mode.BAR) {

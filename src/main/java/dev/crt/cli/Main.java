@@ -107,7 +107,7 @@ public final class Main implements Runnable {
     static int outOfMemory(PrintWriter err) {
         long max = Runtime.getRuntime().maxMemory();
         long suggest = Math.max(1, (2 * max + (1L << 30) - 1) >> 30);
-        err.println("crt: error: out of memory: the Java heap of " + MemoryCheck.gib(max) + " is too small for this"
+        err.println("crt: error: out of memory: the Java heap of " + dev.crt.animation.MemoryCheck.gib(max) + " is too small for this"
                 + " scene; give Java more (CRT_JAVA_OPTS=-Xmx" + suggest + "g ./crt …) or render a smaller image or scene");
         err.flush();
         return INTERNAL_ERROR;

@@ -90,7 +90,7 @@ final class PreviewCommand implements Callable<Integer> {
                 default -> {
                     try {
                         ImageFiles.write(preview.colourImage(s.gamma()), target, s.gamma(),
-                                FrameJob.textChunks(s));
+                                dev.crt.animation.FrameJob.textChunks(s));
                     } catch (IOException e) {
                         throw new CliFailure(ExitCode.FILE_ERROR, ScriptCompilation.plain(e));
                     }

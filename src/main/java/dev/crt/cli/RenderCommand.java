@@ -1,5 +1,7 @@
 package dev.crt.cli;
 
+import dev.crt.animation.FrameFailure;
+import dev.crt.animation.FrameJob;
 import dev.crt.lang.CompileOptions;
 import dev.crt.lang.CompileResult;
 import dev.crt.lang.Source;
@@ -71,6 +73,8 @@ final class RenderCommand implements Callable<Integer> {
              Progress progress = Progress.start("Rendering", total, "px", renderOptions.quiet)) {
             progress.preparing("preparing the scene");
             outcome = FrameJob.run(scene, target, renderOptions.threads, cancel.monitor(progress));
+        } catch (FrameFailure f) {
+            throw new CliFailure(AnimateCommand.exitCode(f.kind()), f.getMessage());
         } catch (RenderCancelledException e) {
             err.println("crt: render cancelled; nothing was written");
             err.flush();

@@ -1,5 +1,6 @@
 package dev.crt.cli;
 
+import dev.crt.animation.FrameJob;
 import dev.crt.render.RenderStats;
 import java.io.PrintWriter;
 import java.util.Locale;

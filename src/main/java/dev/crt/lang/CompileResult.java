@@ -4,18 +4,19 @@ import dev.crt.scene.Scene;
 import java.util.List;
 
 /**
- * The outcome of a compile: a scene when there was no error, and every diagnostic in source order.
+ * The outcome of a compile: a scene when there was no error, every diagnostic in source order, and
+ * the source map when the options asked for one and the scene compiled (else null).
  * {@code outOfMemory} says that the compile stopped because the Java heap was full: the errors then
  * are about the machine (give Java more memory), not necessarily about the script.
  */
-public record CompileResult(Scene scene, List<Diagnostic> diagnostics, boolean outOfMemory) {
+public record CompileResult(Scene scene, List<Diagnostic> diagnostics, SourceMap sourceMap, boolean outOfMemory) {
     public CompileResult {
         diagnostics = List.copyOf(diagnostics);
     }
 
-    public CompileResult(Scene scene, List<Diagnostic> diagnostics) {
-        this(scene, diagnostics, false);
-    }
+    public CompileResult(Scene scene, List<Diagnostic> diagnostics) { this(scene, diagnostics, null, false); }
+
+    public CompileResult(Scene scene, List<Diagnostic> diagnostics, SourceMap sourceMap) { this(scene, diagnostics, sourceMap, false); }
 
     public boolean hasErrors() { return diagnostics.stream().anyMatch(Diagnostic::isError); }
 

@@ -48,6 +48,13 @@ final class DockLayout {
     void resetLayout() {
         CGrid grid = new CGrid(control);
         for (StudioPanel p : panels) grid.add(p.x(), p.y(), p.width(), p.height(), dockables.get(p.id()));
+        // Panels registered at the same place stack as tabs; the first registered is the one in front.
+        java.util.Set<java.util.List<Double>> places = new java.util.HashSet<>();
+        for (StudioPanel p : panels) {
+            if (places.add(java.util.List.of(p.x(), p.y(), p.width(), p.height()))) {
+                grid.select(p.x(), p.y(), p.width(), p.height(), dockables.get(p.id()));
+            }
+        }
         control.getContentArea().deploy(grid);
         dockables.values().forEach(d -> d.setVisible(true));
     }

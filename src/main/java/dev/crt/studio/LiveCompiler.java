@@ -23,9 +23,12 @@ import javax.swing.Timer;
 final class LiveCompiler implements StudioModel.Listener {
     /** Quiet time after the last keystroke before a compile starts. */
     static final int DELAY_MS = 300;
-    /** Live compiles stop sooner than the command line's: the script is being typed. */
+    /**
+     * Live compiles stop sooner than the command line's (the script is being typed) and record the
+     * source map the navigator and property sheet work from.
+     */
     static final CompileOptions OPTIONS = new CompileOptions(0, List.of(), CompileOptions.DEFAULT_LOOP_BUDGET,
-            Duration.ofSeconds(2));
+            Duration.ofSeconds(2), true);
 
     private final ExecutorService worker = Executors.newSingleThreadExecutor(r -> {
         Thread t = new Thread(r, "crt-studio-compile");

@@ -58,9 +58,12 @@ final class RenderJob {
 
     /** The shading model chosen in the Render menu for this session, or null for the script's own. */
     private final Shading shading;
+    /** Render → Settings… for this session only: sizes, sampling and threads that replace the script's. */
+    private final SessionSettings session;
 
-    RenderJob(Source source, CompileResult compiled, Shading shading, Listener listener) {
+    RenderJob(Source source, CompileResult compiled, Shading shading, SessionSettings session, Listener listener) {
         this.shading = shading;
+        this.session = session;
         thread = new Thread(() -> run(source, compiled, listener), "crt-studio-render");
         thread.setDaemon(true);
     }
@@ -88,8 +91,8 @@ final class RenderJob {
                 SwingUtilities.invokeLater(() -> listener.compileFailed(compile));
                 return;
             }
-            Scene scene = shading == null ? compile.scene()
-                    : compile.scene().withSettings(compile.scene().settings().withShading(shading));
+            Scene scene = session.apply(shading == null ? compile.scene()
+                    : compile.scene().withSettings(compile.scene().settings().withShading(shading)));
             Settings settings = scene.settings();
             int width = settings.width(), height = settings.height();
             double gamma = settings.outputGamma();
@@ -115,7 +118,7 @@ final class RenderJob {
             });
 
             long total = (long) width * height;
-            FrameBuffer image = renderer.render(0, new RenderMonitor() {
+            FrameBuffer image = renderer.render(session.threads, new RenderMonitor() {
                 @Override public void tileDone(FrameBuffer fb, int x0, int y0, int x1, int y1) {
                     for (int y = y0; y < y1; y++) {
                         for (int x = x0; x < x1; x++) pixels[y * width + x] = rgb(fb, x, y, gamma);

@@ -19,6 +19,8 @@ import javax.swing.UIManager;
  */
 final class RenderView extends javax.swing.JPanel {
     private BufferedImage picture;
+    /** Drawn over the picture, same size (the selected object's outline), or null. */
+    private BufferedImage overlay;
     private boolean fit = true;
     private double zoom = 1;
     private double panX, panY;
@@ -80,12 +82,21 @@ final class RenderView extends javax.swing.JPanel {
     void show(BufferedImage image) {
         boolean sameSize = picture != null && image != null && picture.getWidth() == image.getWidth()
                 && picture.getHeight() == image.getHeight();
+        if (image != picture) overlay = null;
         picture = image;
         if (!sameSize) fit = true;
         repaint();
     }
 
     BufferedImage picture() { return picture; }
+
+    /** Draws {@code image} (the picture's size; null: nothing) over the picture. */
+    void showOverlay(BufferedImage image) {
+        overlay = image;
+        repaint();
+    }
+
+    BufferedImage overlay() { return overlay; }
 
     void zoomToFit() {
         fit = true;
@@ -167,6 +178,12 @@ final class RenderView extends javax.swing.JPanel {
         if (sx0 < sx1 && sy0 < sy1) {
             g2.drawImage(picture, (int) Math.round(ox + sx0 * z), (int) Math.round(oy + sy0 * z),
                     (int) Math.round(ox + sx1 * z), (int) Math.round(oy + sy1 * z), sx0, sy0, sx1, sy1, null);
+            BufferedImage over = overlay;
+            if (over != null && over.getWidth() == picture.getWidth() && over.getHeight() == picture.getHeight()) {
+                g2.setRenderingHint(RenderingHints.KEY_INTERPOLATION, RenderingHints.VALUE_INTERPOLATION_NEAREST_NEIGHBOR);
+                g2.drawImage(over, (int) Math.round(ox + sx0 * z), (int) Math.round(oy + sy0 * z),
+                        (int) Math.round(ox + sx1 * z), (int) Math.round(oy + sy1 * z), sx0, sy0, sx1, sy1, null);
+            }
         }
         g2.dispose();
     }

@@ -31,6 +31,9 @@ public final class StudioModel {
 
         /** An entity of the current document's scene was selected (index in scene.entities()), or cleared (null). */
         default void selected(ScriptDocument document, Entity entity, int index) {}
+
+        /** The scene time t the studio looks at changed (the animation panel's scrub position). */
+        default void timeChanged(double t) {}
     }
 
     private final List<ScriptDocument> documents = new ArrayList<>();
@@ -42,6 +45,7 @@ public final class StudioModel {
     };
     private ScriptDocument current;
     private int untitled;
+    private double time;
 
     public List<ScriptDocument> documents() { return List.copyOf(documents); }
 
@@ -97,6 +101,15 @@ public final class StudioModel {
 
     public void select(ScriptDocument d, Entity entity, int index) {
         listeners.forEach(l -> l.selected(d, entity, index));
+    }
+
+    /** The scene time t the studio looks at: 0 until the animation panel is scrubbed. */
+    public double time() { return time; }
+
+    public void setTime(double t) {
+        if (t == time) return;
+        time = t;
+        listeners.forEach(l -> l.timeChanged(t));
     }
 
     public void addListener(Listener l) { listeners.add(l); }

@@ -79,6 +79,10 @@ final class StudioWindow implements StudioModel.Listener {
     private final RenderView renderView = new RenderView();
     private final JLabel renderInfo = new JLabel("F5 renders the current script");
     private final ConsolePanel console = new ConsolePanel();
+    private final SessionSettings session = new SessionSettings();
+    private final Throughput throughput = new Throughput();
+    private final AnimationPanel animation = new AnimationPanel(model, session, throughput, console);
+    private final SystemPanel system = new SystemPanel(throughput);
     private final JLabel caretStatus = new JLabel("–");
     private final JLabel renderStatus = new JLabel(" ");
     private final JProgressBar progress = new JProgressBar(0, 1000);
@@ -97,6 +101,8 @@ final class StudioWindow implements StudioModel.Listener {
     private final TransferHandler fileDrop;
     private IntConsumer onExit = code -> {};
     private RenderJob job;
+    /** The Navigator and Properties panels and the Insert menu (issue 8). */
+    private ObjectPanels objects;
     private RenderJob.Result lastRender;
     private ScriptDocument lastRenderDocument;
     private boolean askingAboutDisk;
@@ -168,6 +174,10 @@ final class StudioWindow implements StudioModel.Listener {
 
     RenderView renderView() { return renderView; }
 
+    AnimationPanel animation() { return animation; }
+
+    SystemPanel system() { return system; }
+
     JLabel renderInfo() { return renderInfo; }
 
     JLabel caretStatus() { return caretStatus; }
@@ -183,6 +193,8 @@ final class StudioWindow implements StudioModel.Listener {
     RenderJob.Result lastRender() { return lastRender; }
 
     Action action(String name) { return actions.get(name); }
+
+    ObjectPanels objects() { return objects; }
 
     void onExit(IntConsumer listener) { onExit = listener; }
 
@@ -217,9 +229,15 @@ final class StudioWindow implements StudioModel.Listener {
         renderPanel.add(renderBar, BorderLayout.NORTH);
         renderPanel.add(renderView, BorderLayout.CENTER);
 
-        dock.register(new StudioPanel("script", "Script", scriptPanel, 0, 0, 0.5, 0.75));
-        dock.register(new StudioPanel("render", "Render", renderPanel, 0.5, 0, 0.5, 0.75));
+        dock.register(new StudioPanel("script", "Script", scriptPanel, 0.24, 0, 0.38, 0.75));
+        dock.register(new StudioPanel("render", "Render", renderPanel, 0.62, 0, 0.38, 0.75));
+        objects = new ObjectPanels(this);
+        objects.panels().forEach(dock::register);
         dock.register(new StudioPanel("console", "Console", console, 0, 0.75, 1, 0.25));
+        // Stacked behind the render view: frames are pictures too, and want its room.
+        dock.register(new StudioPanel("animation", "Animation", animation, 0.5, 0, 0.5, 0.75));
+        model.addListener(animation);
+        dock.register(new StudioPanel("system", "System", system, 0, 0.75, 1, 0.25));
     }
 
     private JButton button(String action) {
@@ -269,11 +287,17 @@ final class StudioWindow implements StudioModel.Listener {
                 () -> dock.dockable("render").toFront());
         action("showConsole", "Console", KeyStroke.getKeyStroke(KeyEvent.VK_3, InputEvent.ALT_DOWN_MASK),
                 () -> dock.dockable("console").toFront());
+        action("showAnimation", "Animation", KeyStroke.getKeyStroke(KeyEvent.VK_7, InputEvent.ALT_DOWN_MASK),
+                () -> dock.dockable("animation").toFront());
+        action("showSystem", "System", KeyStroke.getKeyStroke(KeyEvent.VK_8, InputEvent.ALT_DOWN_MASK),
+                () -> dock.dockable("system").toFront());
         action("render", "Render", KeyStroke.getKeyStroke(KeyEvent.VK_F5, 0), this::render);
         action("cancel", "Cancel", KeyStroke.getKeyStroke(KeyEvent.VK_ESCAPE, 0), this::cancelRender);
         action("zoomFit", "Fit", ctrl(KeyEvent.VK_0), renderView::zoomToFit);
         action("zoomActual", "1:1", ctrl(KeyEvent.VK_1), renderView::zoomActualSize);
         action("saveImage", "Save image as…", ctrlShift(KeyEvent.VK_E), this::saveImage);
+        action("sceneSettings", "Settings…", KeyStroke.getKeyStroke(KeyEvent.VK_S, InputEvent.CTRL_DOWN_MASK | InputEvent.ALT_DOWN_MASK),
+                this::sceneSettings);
         action("renderOnSave", "Render on save", ctrlShift(KeyEvent.VK_F5), () -> {
             settings.renderOnSave = !settings.renderOnSave;
             renderOnSaveItem.setSelected(settings.renderOnSave);
@@ -302,9 +326,10 @@ final class StudioWindow implements StudioModel.Listener {
             themes.add(item);
             view.add(item);
         }
-        add(view, "toggleTheme", null, "showScript", "showRender", "showConsole", null, "resetLayout");
+        add(view, "toggleTheme", null, "showScript", "showRender", "showConsole", "showAnimation", "showSystem", null, "resetLayout");
         bar.add(view);
-        JMenu render = menu("Render", KeyEvent.VK_R, "render", "cancel", null, "zoomFit", "zoomActual", null, "saveImage");
+        JMenu render = menu("Render", KeyEvent.VK_R, "render", "cancel", null, "zoomFit", "zoomActual", null, "saveImage",
+                "sceneSettings");
         // The check box shows the setting; the action behind it toggles it, from the menu or the key.
         renderOnSaveItem.setText("Render on save");
         renderOnSaveItem.setAccelerator((KeyStroke) actions.get("renderOnSave").getValue(Action.ACCELERATOR_KEY));
@@ -316,6 +341,7 @@ final class StudioWindow implements StudioModel.Listener {
         originalShadingItem.getAccessibleContext().setAccessibleName("Look of CRT 2015");
         render.add(originalShadingItem);
         bar.add(render);
+        bar.add(objects.insertMenu());
         bar.add(menu("Help", KeyEvent.VK_H, "shortcuts", "about"));
         return bar;
     }
@@ -590,6 +616,7 @@ final class StudioWindow implements StudioModel.Listener {
             if (!close(d)) return;
         }
         cancelRender();
+        animation.dispose();
         settings.maximized = (frame.getExtendedState() & Frame.MAXIMIZED_BOTH) != 0;
         if (!settings.maximized) settings.bounds = frame.getBounds();
         try {
@@ -724,7 +751,7 @@ final class StudioWindow implements StudioModel.Listener {
         renderStatus.setText("rendering " + d.name() + "…");
         RenderJob[] self = new RenderJob[1];
         Shading shading = originalShadingItem.isSelected() ? Shading.ORIGINAL : null;
-        self[0] = new RenderJob(d.source(), compiled, shading, new RenderJob.Listener() {
+        self[0] = new RenderJob(d.source(), compiled, shading, session, new RenderJob.Listener() {
             @Override public void picture(java.awt.image.BufferedImage image, boolean coarse) {
                 if (job != self[0]) return;
                 renderView.show(image);
@@ -743,8 +770,11 @@ final class StudioWindow implements StudioModel.Listener {
                 job = null;
                 lastRender = r;
                 renderView.show(r.picture());
+                objects.rendered(r);
                 progress.setVisible(false);
                 RenderStats stats = r.renderer().stats();
+                long end = System.nanoTime();
+                throughput.record(stats.totalRays(), end - stats.renderNanos(), end);
                 Settings s = r.scene().settings();
                 String summary = String.format("%d×%d in %.2f s, %.1f Mrays/s, first picture after %d ms", s.width(), s.height(),
                         r.totalNanos() / 1e9, stats.megaRaysPerSecond(), r.firstPictureNanos() / 1_000_000);
@@ -794,6 +824,14 @@ final class StudioWindow implements StudioModel.Listener {
     }
 
     boolean isRendering() { return job != null; }
+
+    /** Render → Settings…: the scene settings, into the script or for this session. */
+    private void sceneSettings() {
+        ScriptDocument d = model.current();
+        ScriptEditor editor = d == null ? null : editors.get(d);
+        if (editor == null) return;
+        new SceneSettingsDialog(frame, d, editor.area(), session, m -> console.log(ConsolePanel.Kind.INFO, m)).setVisible(true);
+    }
 
     private void pickPixel(int x, int y) {
         RenderJob.Result r = lastRender;

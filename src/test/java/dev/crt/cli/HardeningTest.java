@@ -1,5 +1,6 @@
 package dev.crt.cli;
 
+import dev.crt.animation.FramePattern;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import java.io.ByteArrayInputStream;

@@ -1,5 +1,6 @@
 package dev.crt.cli;
 
+import dev.crt.animation.FrameRange;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
 

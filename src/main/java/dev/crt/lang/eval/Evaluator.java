@@ -75,6 +75,8 @@ public final class Evaluator extends CRTBaseVisitor<Value> {
     private int loopDepth;
     private boolean sawScene;
     private int errors;
+    /** Null unless the options ask for a source map: then every hook below records into it. */
+    private final SourceRecorder recorder;
 
     /** {@code startNanos} (System.nanoTime) is when the compile began: its time budget counts from then. */
     public Evaluator(TextPositions positions, CompileOptions options, Path scriptFolder, long startNanos) {
@@ -82,6 +84,7 @@ public final class Evaluator extends CRTBaseVisitor<Value> {
         this.budget = new Budget(options.loopBudget(), options.timeBudget(), startNanos);
         this.objects = new ObjectBuilder(this, new Assets(scriptFolder, options.assetDirs()));
         this.settings = new SettingsState();
+        this.recorder = options.sourceMap() ? new SourceRecorder(this, positions.text()) : null;
         // A whole time (every frame number of crt animate) is an integer, so `xs[t]` and `t % 2` work.
         double time = options.time();
         globals.put("t", time == Math.rint(time) && Math.abs(time) < 1e15 ? NumberValue.ofInt(time) : NumberValue.ofFloat(time));
@@ -137,6 +140,11 @@ public final class Evaluator extends CRTBaseVisitor<Value> {
         }
         return null;
     }
+
+    /** What {@link #run} recorded about where things were written, or null when the options did not ask. */
+    public dev.crt.lang.SourceMap sourceMap() { return recorder == null ? null : recorder.finish(placed); }
+
+    int charOffset(int codePointIndex) { return positions.charOffset(codePointIndex); }
 
     /** Every diagnostic so far, in source order. */
     public List<Diagnostic> diagnostics() {
@@ -194,6 +202,7 @@ public final class Evaluator extends CRTBaseVisitor<Value> {
         } else if (statement instanceof CRTParser.SettingsBlockContext block) {
             if (place == Place.MACRO) throw error("a Settings block cannot be inside a macro", span(block.SETTINGS().getSymbol()));
             SourceSpan keyword = span(block.SETTINGS().getSymbol());
+            if (recorder != null) recorder.settings(block);
             settings.apply(objects.evaluate("Settings", SettingsState.ATTRIBUTES, block.attribute(), keyword, span(block)));
         }
     }
@@ -414,6 +423,7 @@ public final class Evaluator extends CRTBaseVisitor<Value> {
     }
 
     private Value assign(CRTParser.AssignmentContext ctx, Value value) {
+        if (recorder != null && locals == null) recorder.assigned(ctx);
         scope().put(ctx.IDENT().getText(), value);
         return value;
     }
@@ -554,7 +564,9 @@ public final class Evaluator extends CRTBaseVisitor<Value> {
                             + " is a surface, not a solid, so it cannot be used in CSG", span(ctx));
                 }
             }
-            return EntityValue.of(new Csg(operation, x.entity(), y.entity(), Transform.IDENTITY, span(ctx)));
+            EntityValue csg = EntityValue.of(new Csg(operation, x.entity(), y.entity(), Transform.IDENTITY, span(ctx)));
+            if (recorder != null) recorder.operation(ctx, csg, operation.name().charAt(0) + operation.name().substring(1).toLowerCase(java.util.Locale.ROOT));
+            return csg;
         }
         return Arithmetic.additive(op, a, b, ctx, this);
     }
@@ -694,6 +706,8 @@ public final class Evaluator extends CRTBaseVisitor<Value> {
         if (stop != null) throw new EvaluationStopped(stop, callSpan, callChain());
         Map<String, Value> saved = locals;
         locals = scope;
+        boolean outermost = callStack.isEmpty();
+        if (recorder != null && outermost) recorder.callStarted(name != null ? name : "(anonymous)", params, ctx);
         callStack.add(new Frame(name != null ? name : "(anonymous)", callSpan));
         try {
             List<EntityValue> out = new ArrayList<>();
@@ -702,6 +716,7 @@ public final class Evaluator extends CRTBaseVisitor<Value> {
         } finally {
             callStack.remove(callStack.size() - 1);
             locals = saved;
+            if (recorder != null && outermost) recorder.callEnded();
         }
     }
 
@@ -854,7 +869,9 @@ public final class Evaluator extends CRTBaseVisitor<Value> {
 
     @Override
     public Value visitObject(CRTParser.ObjectContext ctx) {
-        return objects.build(ctx);
+        Value value = objects.build(ctx);
+        if (recorder != null) recorder.object(ctx, value);
+        return value;
     }
 
     @Override

@@ -1,4 +1,4 @@
-package dev.crt.cli;
+package dev.crt.animation;
 
 import dev.crt.image.FrameBuffer;
 import dev.crt.image.ImageFiles;
@@ -12,18 +12,30 @@ import java.nio.file.Path;
 import java.util.LinkedHashMap;
 import java.util.Locale;
 import java.util.Map;
+import java.util.function.BiConsumer;
 
 /** Renders one compiled scene and writes it atomically to an image file: the unit render and animate share. */
-final class FrameJob {
+public final class FrameJob {
     /** What one frame cost: the renderer's counts and times plus the time to write the file. */
-    record Outcome(RenderStats stats, long writeNanos) {}
+    public record Outcome(RenderStats stats, long writeNanos) {}
 
     private FrameJob() {}
 
-    static Outcome run(Scene scene, Path out, int threads, RenderMonitor monitor) throws CliFailure {
+    /**
+     * Renders {@code scene} on {@code threads} threads (0: all cores) and writes it to {@code out};
+     * a size, sampling or memory the render cannot meet, or a file that cannot be written, is a
+     * {@link FrameFailure}; a cancel through {@code monitor} leaves no file.
+     */
+    public static Outcome run(Scene scene, Path out, int threads, RenderMonitor monitor) throws FrameFailure {
+        return run(scene, out, threads, monitor, (image, stats) -> {});
+    }
+
+    /** As {@link #run(Scene, Path, int, RenderMonitor)}, handing the picture and its counts to {@code written} once it is in its file. */
+    public static Outcome run(Scene scene, Path out, int threads, RenderMonitor monitor,
+            BiConsumer<FrameBuffer, RenderStats> written) throws FrameFailure {
         int w = scene.settings().width(), h = scene.settings().height();
         if ((long) w * h > FrameBuffer.MAX_PIXELS) {
-            throw new CliFailure(ExitCode.USAGE, String.format(Locale.ROOT,
+            throw new FrameFailure(FrameFailure.Kind.SETTINGS, String.format(Locale.ROOT,
                     "an image of %d×%d pixels is too large to render (at most %,d pixels)", w, h, FrameBuffer.MAX_PIXELS));
         }
         Sampling.check(scene.settings());
@@ -35,19 +47,22 @@ final class FrameJob {
             ImageFiles.write(image, out, scene.settings().outputGamma(), textChunks(scene.settings()));
         } catch (IOException e) {
             // ImageFiles' messages already say "cannot write OUT: why".
-            throw new CliFailure(ExitCode.FILE_ERROR, ScriptCompilation.plain(e));
+            String m = e.getMessage();
+            throw new FrameFailure(FrameFailure.Kind.FILE, m == null || m.isBlank() ? e.getClass().getSimpleName() : m);
         }
-        return new Outcome(renderer.stats(), System.nanoTime() - start);
+        long writeNanos = System.nanoTime() - start;
+        written.accept(image, renderer.stats());
+        return new Outcome(renderer.stats(), writeNanos);
     }
 
     /** PNG text chunks from the scene's metadata, with the standard keywords. */
-    static Map<String, String> textChunks(Settings s) {
+    public static Map<String, String> textChunks(Settings s) {
         Map<String, String> text = new LinkedHashMap<>();
         putIfSet(text, "Title", s.title());
         putIfSet(text, "Author", s.author());
         putIfSet(text, "Creation Time", s.date());
         putIfSet(text, "Description", s.notes());
-        String version = Main.class.getPackage().getImplementationVersion();
+        String version = FrameJob.class.getPackage().getImplementationVersion();
         text.put("Software", "CRT " + (version == null ? "development build" : version));
         return text;
     }

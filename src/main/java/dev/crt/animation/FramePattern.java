@@ -1,4 +1,4 @@
-package dev.crt.cli;
+package dev.crt.animation;
 
 import java.nio.file.InvalidPathException;
 import java.nio.file.Path;
@@ -12,11 +12,11 @@ import java.util.regex.Pattern;
  * literal percent sign. Anything else is refused, because a name without the frame number would
  * make every frame overwrite the same file.
  */
-record FramePattern(String text, String before, String conversion, String after) {
+public record FramePattern(String text, String before, String conversion, String after) {
     private static final Pattern CONVERSION = Pattern.compile("%(0?[1-9]\\d{0,2})?d");
 
     /** Parses and checks {@code text}; a bad pattern is an IllegalArgumentException. */
-    static FramePattern parse(String text) {
+    public static FramePattern parse(String text) {
         StringBuilder before = new StringBuilder();
         StringBuilder after = new StringBuilder();
         String conversion = null;
@@ -57,13 +57,17 @@ record FramePattern(String text, String before, String conversion, String after)
     }
 
     /** The file of frame {@code frame}; a width pads with zeros ({@code %5d} as {@code %05d}), never with spaces. */
-    Path path(int frame) {
+    public Path path(int frame) {
         String padded = conversion.length() > 2 && conversion.charAt(1) != '0' ? "%0" + conversion.substring(1) : conversion;
         return Path.of(before + String.format(Locale.ROOT, padded, frame) + after);
     }
 
     /** The image type, from the pattern's extension ("png", "ppm", "pfm", or anything the user typed). */
-    String extension() { return OutputFiles.extension(path(0)); }
+    public String extension() {
+        String name = path(0).getFileName() == null ? "" : path(0).getFileName().toString();
+        int dot = name.lastIndexOf('.');
+        return dot < 0 ? "" : name.substring(dot + 1).toLowerCase(Locale.ROOT);
+    }
 
     @Override
     public String toString() { return text; }

@@ -1,4 +1,4 @@
-package dev.crt.cli;
+package dev.crt.animation;
 
 import dev.crt.image.GifWriter;
 import dev.crt.image.PictureFiles;
@@ -9,11 +9,11 @@ import java.nio.file.Path;
 import java.util.List;
 
 /** Puts the frame files of an animation into one looping GIF. */
-final class GifAssembly {
+public final class GifAssembly {
     private GifAssembly() {}
 
-    /** Writes {@code frames} (8-bit .png or .ppm files, in order) to {@code gif}; fails with exit code 3. */
-    static void write(Path gif, List<Path> frames, double fps) throws CliFailure {
+    /** Writes {@code frames} (8-bit .png or .ppm files, in order) to {@code gif}, atomically, looping at {@code fps}. */
+    public static void write(Path gif, List<Path> frames, double fps) throws IOException {
         GifWriter.Frames source = new GifWriter.Frames() {
             @Override
             public int count() { return frames.size(); }
@@ -21,11 +21,7 @@ final class GifAssembly {
             @Override
             public RgbImage read(int index) throws IOException { return rgb(PictureFiles.read(frames.get(index))); }
         };
-        try {
-            GifWriter.write(gif, source, fps);
-        } catch (IOException e) {
-            throw new CliFailure(ExitCode.FILE_ERROR, "cannot write " + gif + ": " + ScriptCompilation.plain(e));
-        }
+        GifWriter.write(gif, source, fps);
     }
 
     private static RgbImage rgb(Picture picture) {

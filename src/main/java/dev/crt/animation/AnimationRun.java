@@ -1,4 +1,4 @@
-package dev.crt.cli;
+package dev.crt.animation;
 
 import dev.crt.lang.CompileOptions;
 import dev.crt.lang.CompileResult;
@@ -8,8 +8,10 @@ import dev.crt.lang.DiagnosticFormatter;
 import dev.crt.lang.Source;
 import dev.crt.render.RenderCancelledException;
 import dev.crt.render.RenderMonitor;
+import dev.crt.render.RenderStats;
 import dev.crt.scene.Scene;
-import java.io.PrintWriter;
+import dev.crt.image.FrameBuffer;
+import dev.crt.scene.Settings;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Comparator;
@@ -19,23 +21,44 @@ import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.atomic.AtomicReference;
+import java.util.function.BooleanSupplier;
+import java.util.function.Consumer;
 import java.util.function.UnaryOperator;
 
 /**
- * Renders frames on a number of workers. Each frame is one independent unit: the script compiled
- * afresh with t set to the frame number, then {@link FrameJob} renders it and writes it atomically.
- * A failing frame stops the run (frames in progress are cancelled and write nothing) unless the run
- * keeps going, in which case every failure is collected for the end.
+ * Renders frames on a number of workers: the engine of {@code crt animate} and of the studio's
+ * animation panel. Each frame is one independent unit: the script compiled afresh with t set to the
+ * frame number, then {@link FrameJob} renders it and writes it atomically. A failing frame stops the
+ * run (frames in progress are cancelled and write nothing) unless the run keeps going, in which case
+ * every failure is collected for the end.
  */
-final class AnimationRun {
+public final class AnimationRun {
     /** A frame to render and the file it goes to. */
-    record Frame(int number, Path file) {}
+    public record Frame(int number, Path file) {}
 
-    /** A frame that could not be made, with the exit code its failure calls for. */
-    record Failure(int frame, int exitCode, String reason) {}
+    /** A frame that could not be made, whose fault it was, and why. */
+    public record Failure(int frame, FrameFailure.Kind kind, String reason) {}
 
-    /** How the run ended: failures in frame order, whether Ctrl-C stopped it, and what it cost. */
-    record Outcome(List<Failure> failures, boolean cancelled, AnimationTotals totals, long wallNanos) {}
+    /** How the run ended: failures in frame order, whether it was cancelled, and what it cost. */
+    public record Outcome(List<Failure> failures, boolean cancelled, AnimationTotals totals, long wallNanos) {}
+
+    /** Told how the frames go, from the workers' threads. */
+    public interface Listener {
+        /** Frame {@code frame} starts: its script is about to be compiled. */
+        default void started(int frame) {}
+
+        /** {@code done} of {@code of} pixels of frame {@code frame} are traced; called often. */
+        default void rendering(int frame, long done, long of) {}
+
+        /**
+         * Frame {@code frame} is in its file; {@code image} is its picture in linear light, with the
+         * settings it was made with and what tracing it cost.
+         */
+        default void written(Frame frame, FrameBuffer image, Settings settings, RenderStats stats) {}
+
+        /** Frame {@code frame} is over: written, or failed or cancelled when {@code written} is false. */
+        default void finished(int frame, boolean written) {}
+    }
 
     private final Source source;
     private final CompileOptions options;
@@ -43,7 +66,7 @@ final class AnimationRun {
     private final int jobs;
     private final int threadsPerFrame;
     private final boolean keepGoing;
-    private final PrintWriter err;
+    private final Consumer<String> report;
 
     private final AtomicBoolean stopping = new AtomicBoolean();
     private final AtomicReference<Throwable> bug = new AtomicReference<>();
@@ -51,23 +74,29 @@ final class AnimationRun {
     private final Set<String> warningsShown = ConcurrentHashMap.newKeySet();
     private final AnimationTotals totals = new AnimationTotals();
 
-    AnimationRun(Source source, CompileOptions options, UnaryOperator<Scene> commandLineSettings, int jobs,
-            int threadsPerFrame, boolean keepGoing, PrintWriter err) {
+    /**
+     * A run of {@code source} compiled with {@code options} (t set per frame), each scene passed
+     * through {@code settings} (the command line's or the session's overrides), {@code jobs} frames
+     * at once on {@code threadsPerFrame} threads each; diagnostics go to {@code report} as text.
+     */
+    public AnimationRun(Source source, CompileOptions options, UnaryOperator<Scene> settings, int jobs,
+            int threadsPerFrame, boolean keepGoing, Consumer<String> report) {
         this.source = source;
         this.options = options;
-        this.commandLineSettings = commandLineSettings;
+        this.commandLineSettings = settings;
         this.jobs = jobs;
         this.threadsPerFrame = threadsPerFrame;
         this.keepGoing = keepGoing;
-        this.err = err;
+        this.report = report;
     }
 
-    Outcome run(List<Frame> frames, Cancellation cancel, AnimationProgress progress) {
+    /** Renders {@code frames} and returns how it went; {@code cancel} is polled to stop (frames in flight write nothing). */
+    public Outcome run(List<Frame> frames, BooleanSupplier cancel, Listener progress) {
         long start = System.nanoTime();
         AtomicInteger next = new AtomicInteger();
         Runnable worker = () -> {
             int i;
-            while (!stopping.get() && !cancel.isCancelled() && (i = next.getAndIncrement()) < frames.size()) {
+            while (!stopping.get() && !cancel.getAsBoolean() && (i = next.getAndIncrement()) < frames.size()) {
                 renderOne(frames.get(i), cancel, progress);
             }
         };
@@ -83,10 +112,10 @@ final class AnimationRun {
         if (b instanceof Error e) throw e;
         List<Failure> sorted = new ArrayList<>(failures);
         sorted.sort(Comparator.comparingInt(Failure::frame));
-        return new Outcome(sorted, cancel.isCancelled(), totals, System.nanoTime() - start);
+        return new Outcome(sorted, cancel.getAsBoolean(), totals, System.nanoTime() - start);
     }
 
-    private void renderOne(Frame frame, Cancellation cancel, AnimationProgress progress) {
+    private void renderOne(Frame frame, BooleanSupplier cancel, Listener progress) {
         progress.started(frame.number());
         boolean written = false;
         try {
@@ -95,7 +124,8 @@ final class AnimationRun {
             long compileNanos = System.nanoTime() - compileStart;
             report(frame, result);
             if (result.hasErrors()) {
-                fail(new Failure(frame.number(), ExitCode.ofErrors(result), "the script has errors at t = " + frame.number()));
+                fail(new Failure(frame.number(), result.outOfMemory() ? FrameFailure.Kind.MEMORY : FrameFailure.Kind.SCRIPT,
+                        "the script has errors at t = " + frame.number()));
                 return;
             }
             Scene scene = commandLineSettings.apply(result.scene());
@@ -104,13 +134,14 @@ final class AnimationRun {
                 public void progress(long done, long total) { progress.rendering(frame.number(), done, total); }
 
                 @Override
-                public boolean isCancelled() { return cancel.isCancelled() || stopping.get(); }
+                public boolean isCancelled() { return cancel.getAsBoolean() || stopping.get(); }
             };
-            FrameJob.Outcome outcome = FrameJob.run(scene, frame.file(), threadsPerFrame, monitor);
+            FrameJob.Outcome outcome = FrameJob.run(scene, frame.file(), threadsPerFrame, monitor,
+                    (image, stats) -> progress.written(frame, image, scene.settings(), stats));
             totals.add(compileNanos, outcome);
             written = true;
-        } catch (CliFailure f) {
-            fail(new Failure(frame.number(), f.exitCode(), f.getMessage()));
+        } catch (FrameFailure f) {
+            fail(new Failure(frame.number(), f.kind(), f.getMessage()));
         } catch (RenderCancelledException e) {
             // Stopped by Ctrl-C or by another frame's failure: nothing was written for this frame.
         } catch (RuntimeException | Error e) {
@@ -130,10 +161,7 @@ final class AnimationRun {
             if (!d.isWarning() || warningsShown.add(formatted)) text.append(formatted).append('\n');
         }
         if (text.length() == 0) return;
-        synchronized (err) {
-            err.print(text);
-            err.flush();
-        }
+        report.accept(text.toString());
     }
 
     private void fail(Failure failure) {

@@ -1,4 +1,4 @@
-package dev.crt.cli;
+package dev.crt.animation;
 
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
