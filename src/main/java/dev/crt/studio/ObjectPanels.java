@@ -228,8 +228,8 @@ final class ObjectPanels implements StudioModel.Listener {
         String broken = ScriptEdits.breaks(d.source().name(), d.result().errorCount(), edit.applyTo(script));
         if (broken != null) return refuse("not changed: " + broken);
         apply(d, edit);
-        properties.say("changed " + edit.what(), false);
-        window.console().log(ConsolePanel.Kind.INFO, "property: changed " + edit.what());
+        properties.say(edit.what(), false);
+        window.console().log(ConsolePanel.Kind.INFO, "property: " + edit.what());
         return null;
     }
 

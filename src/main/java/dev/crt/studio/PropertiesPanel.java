@@ -173,7 +173,7 @@ final class PropertiesPanel extends JPanel {
 
         /** A property of the default material: setting it writes {@code material -> Material { … }} into the entity. */
         private org.openide.nodes.Node.Property<?> defaultMaterial(ObjectInfo entity, MacroCall call, Spec spec) {
-            return editable(spec, "material." + spec.name(), parse(spec, spec.defaultText()), "Not written: the default. Setting it adds a material",
+            return editable(spec, spec.name(), parse(spec, spec.defaultText()), "Not written: the default. Setting it adds a material",
                     literal -> writer.write(entity, call, "material", "Material { " + spec.name() + " -> " + literal + " }"));
         }
     }
