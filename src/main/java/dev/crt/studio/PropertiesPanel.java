@@ -16,6 +16,7 @@ import java.beans.PropertyEditor;
 import java.beans.PropertyVetoException;
 import java.lang.reflect.InvocationTargetException;
 import java.util.LinkedHashMap;
+import java.util.List;
 import java.util.Map;
 import javax.swing.BorderFactory;
 import javax.swing.JLabel;
@@ -35,15 +36,19 @@ import org.openide.nodes.Sheet;
  * {@link Writer}; attributes computed by an expression are shown read-only with the expression.
  */
 final class PropertiesPanel extends JPanel {
-    /** Writes a new literal for an attribute into the script; returns null when done, else why it was not. */
+    /** Writes a new literal into the script; returns null when done, else why it was not. */
     interface Writer {
+        /** For an attribute of an object (in place, through its variable or macro argument, or inserted). */
         String write(ObjectInfo object, MacroCall call, String attribute, String literal);
+
+        /** In place of a literal expression (a macro call's argument), {@code what} naming it. */
+        String replace(Expr literalExpr, String literal, String what);
     }
 
     private final PropertySheet sheet = new PropertySheet();
     private final JLabel message = new JLabel(" ");
     private final JLabel title = new JLabel("Nothing selected");
-    private Writer writer = (o, c, a, l) -> "nothing to write to";
+    private Writer writer;
     private Node shown;
     private SourceMap map;
 
@@ -137,7 +142,23 @@ final class PropertiesPanel extends JPanel {
             set.put(text("macro", call.macro(), "The macro this call runs"));
             for (int i = 0; i < call.arguments().size() && i < call.parameters().size(); i++) {
                 Expr arg = call.arguments().get(i);
-                set.put(text(call.parameters().get(i), arg.text(), "The argument written for this parameter: edit it in the script"));
+                String parameter = call.parameters().get(i);
+                Type type = switch (arg.kind()) {
+                    case NUMBER -> Type.NUMBER;
+                    case VECTOR -> Type.VECTOR;
+                    case COLOR -> Type.COLOR;
+                    case STRING -> Type.STRING;
+                    case BOOLEAN -> Type.BOOLEAN;
+                    default -> null;
+                };
+                if (type == null) {
+                    set.put(text(parameter, "= " + arg.text(), "Computed by an expression: edit it in the script"));
+                    continue;
+                }
+                Spec spec = new Spec(parameter, type, arg.text(), Double.NEGATIVE_INFINITY, false, Double.POSITIVE_INFINITY, false, List.of());
+                set.put(editable(spec, parameter, parse(spec, arg.text()), "The argument of this call: every entity the call makes changes",
+                        lit -> writer.replace(arg, lit, "changed the argument " + parameter + " of " + call.macro() + "(…) at line "
+                                + call.span().line())));
             }
         }
 
