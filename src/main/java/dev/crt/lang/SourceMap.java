@@ -17,7 +17,8 @@ public record SourceMap(Map<Integer, ObjectInfo> objects, Map<Long, ObjectInfo> 
         objects = Map.copyOf(objects);
         operations = Map.copyOf(operations);
         settings = List.copyOf(settings);
-        entityCalls = java.util.Collections.unmodifiableList(new java.util.ArrayList<>(entityCalls));
+        // May hold nulls (entities placed directly), which List.copyOf refuses.
+        entityCalls = java.util.Collections.unmodifiableList(entityCalls);
         definitions = Map.copyOf(definitions);
     }
 

@@ -46,7 +46,15 @@ final class ObjectPanels implements StudioModel.Listener {
         // The dock honours minimum sizes: without one, the render view's long toolbar squeezes these to a sliver.
         navigator.setMinimumSize(new java.awt.Dimension(240, 120));
         properties.setMinimumSize(new java.awt.Dimension(240, 120));
-        properties.writer(this::write);
+        properties.writer(new PropertiesPanel.Writer() {
+            @Override public String write(ObjectInfo object, MacroCall call, String attribute, String literal) {
+                return ObjectPanels.this.write(object, call, attribute, literal);
+            }
+
+            @Override public String replace(Expr literalExpr, String literal, String what) {
+                return ObjectPanels.this.write(new ScriptEdits.Edit(literalExpr.start(), literalExpr.end(), literal, what));
+            }
+        });
     }
 
     NavigatorPanel navigator() { return navigator; }
@@ -218,18 +226,25 @@ final class ObjectPanels implements StudioModel.Listener {
         if (d == null || map == null || !d.resultIsCurrent()) {
             return refuse("the script changed since its last compile: try again when it has compiled");
         }
-        String script = d.content();
-        ScriptEdits.Edit edit;
         try {
-            edit = ScriptEdits.setAttribute(script, map, object, call, attribute, literal);
+            return write(ScriptEdits.setAttribute(d.content(), map, object, call, attribute, literal));
         } catch (ScriptEdits.Refused r) {
             return refuse(r.getMessage());
         }
+    }
+
+    /** Makes {@code edit} when the compile it refers to is of the text as it is and the edit keeps it compiling. */
+    private String write(ScriptEdits.Edit edit) {
+        ScriptDocument d = window.model().current();
+        if (d == null || map == null || !d.resultIsCurrent()) {
+            return refuse("the script changed since its last compile: try again when it has compiled");
+        }
+        String script = d.content();
         String broken = ScriptEdits.breaks(d.source().name(), d.result().errorCount(), edit.applyTo(script));
         if (broken != null) return refuse("not changed: " + broken);
         apply(d, edit);
-        properties.say("changed " + edit.what(), false);
-        window.console().log(ConsolePanel.Kind.INFO, "property: changed " + edit.what());
+        properties.say(edit.what(), false);
+        window.console().log(ConsolePanel.Kind.INFO, "property: " + edit.what());
         return null;
     }
 

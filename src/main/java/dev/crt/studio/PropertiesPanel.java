@@ -16,6 +16,7 @@ import java.beans.PropertyEditor;
 import java.beans.PropertyVetoException;
 import java.lang.reflect.InvocationTargetException;
 import java.util.LinkedHashMap;
+import java.util.List;
 import java.util.Map;
 import javax.swing.BorderFactory;
 import javax.swing.JLabel;
@@ -35,41 +36,60 @@ import org.openide.nodes.Sheet;
  * {@link Writer}; attributes computed by an expression are shown read-only with the expression.
  */
 final class PropertiesPanel extends JPanel {
-    /** Writes a new literal for an attribute into the script; returns null when done, else why it was not. */
+    /** Writes a new literal into the script; returns null when done, else why it was not. */
     interface Writer {
+        /** For an attribute of an object (in place, through its variable or macro argument, or inserted). */
         String write(ObjectInfo object, MacroCall call, String attribute, String literal);
+
+        /** In place of a literal expression (a macro call's argument), {@code what} naming it. */
+        String replace(Expr literalExpr, String literal, String what);
     }
 
-    private final PropertySheet sheet = new PropertySheet();
+    /**
+     * Built at the first selection, not with the window: loading it takes 0.5 to 1.2 s of the EDT
+     * cold (measured on the loaded 2-core machine), which start-up and the first keystrokes should not wait for.
+     */
+    private PropertySheet sheet;
+    private final JLabel placeholder = new JLabel("Select an object in the navigator or the script", JLabel.CENTER);
     private final JLabel message = new JLabel(" ");
     private final JLabel title = new JLabel("Nothing selected");
-    private Writer writer = (o, c, a, l) -> "nothing to write to";
+    private Writer writer;
     private Node shown;
     private SourceMap map;
 
     PropertiesPanel() {
         super(new BorderLayout());
-        sheet.setName("propertySheet");
-        sheet.getAccessibleContext().setAccessibleName("Properties");
-        try {
-            sheet.setSortingMode(PropertySheet.UNSORTED);
-        } catch (PropertyVetoException e) {
-            // The sheet keeps its own order then; nothing is lost.
-        }
-        sheet.setDescriptionAreaVisible(true);
+        placeholder.setEnabled(false);
         title.setName("propertiesTitle");
         title.setBorder(BorderFactory.createEmptyBorder(3, 6, 3, 6));
         message.setName("propertiesMessage");
         message.getAccessibleContext().setAccessibleName("Properties message");
         message.setBorder(BorderFactory.createEmptyBorder(3, 6, 3, 6));
         add(title, BorderLayout.NORTH);
-        add(sheet, BorderLayout.CENTER);
+        add(placeholder, BorderLayout.CENTER);
         add(message, BorderLayout.SOUTH);
     }
 
     void writer(Writer w) { writer = w; }
 
-    PropertySheet sheet() { return sheet; }
+    PropertySheet sheet() {
+        if (sheet == null) {
+            sheet = new PropertySheet();
+            sheet.setName("propertySheet");
+            sheet.getAccessibleContext().setAccessibleName("Properties");
+            try {
+                sheet.setSortingMode(PropertySheet.UNSORTED);
+            } catch (PropertyVetoException e) {
+                // The sheet keeps its own order then; nothing is lost.
+            }
+            sheet.setDescriptionAreaVisible(true);
+            remove(placeholder);
+            add(sheet, BorderLayout.CENTER);
+            revalidate();
+            repaint();
+        }
+        return sheet;
+    }
 
     JLabel message() { return message; }
 
@@ -88,7 +108,8 @@ final class PropertiesPanel extends JPanel {
         map = sourceMap;
         title.setText(node == null ? "Nothing selected" : node.label() + (node.span() != null && node.span().line() > 0
                 ? "  (line " + node.span().line() + ")" : ""));
-        sheet.getAccessibleContext().setAccessibleDescription(node == null ? "" : "Properties of " + node.label());
+        if (node == null && sheet == null) return;
+        sheet().getAccessibleContext().setAccessibleDescription(node == null ? "" : "Properties of " + node.label());
         sheet.setNodes(node == null || sourceMap == null ? new org.openide.nodes.Node[0]
                 : new org.openide.nodes.Node[] {new ObjectNode(node)});
     }
@@ -137,7 +158,23 @@ final class PropertiesPanel extends JPanel {
             set.put(text("macro", call.macro(), "The macro this call runs"));
             for (int i = 0; i < call.arguments().size() && i < call.parameters().size(); i++) {
                 Expr arg = call.arguments().get(i);
-                set.put(text(call.parameters().get(i), arg.text(), "The argument written for this parameter: edit it in the script"));
+                String parameter = call.parameters().get(i);
+                Type type = switch (arg.kind()) {
+                    case NUMBER -> Type.NUMBER;
+                    case VECTOR -> Type.VECTOR;
+                    case COLOR -> Type.COLOR;
+                    case STRING -> Type.STRING;
+                    case BOOLEAN -> Type.BOOLEAN;
+                    default -> null;
+                };
+                if (type == null) {
+                    set.put(text(parameter, "= " + arg.text(), "Computed by an expression: edit it in the script"));
+                    continue;
+                }
+                Spec spec = new Spec(parameter, type, arg.text(), Double.NEGATIVE_INFINITY, false, Double.POSITIVE_INFINITY, false, List.of());
+                set.put(editable(spec, parameter, parse(spec, arg.text()), "The argument of this call: every entity the call makes changes",
+                        lit -> writer.replace(arg, lit, "changed the argument " + parameter + " of " + call.macro() + "(…) at line "
+                                + call.span().line())));
             }
         }
 
@@ -173,7 +210,7 @@ final class PropertiesPanel extends JPanel {
 
         /** A property of the default material: setting it writes {@code material -> Material { … }} into the entity. */
         private org.openide.nodes.Node.Property<?> defaultMaterial(ObjectInfo entity, MacroCall call, Spec spec) {
-            return editable(spec, "material." + spec.name(), parse(spec, spec.defaultText()), "Not written: the default. Setting it adds a material",
+            return editable(spec, spec.name(), parse(spec, spec.defaultText()), "Not written: the default. Setting it adds a material",
                     literal -> writer.write(entity, call, "material", "Material { " + spec.name() + " -> " + literal + " }"));
         }
     }

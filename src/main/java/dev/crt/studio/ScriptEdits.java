@@ -22,7 +22,7 @@ import java.util.List;
  * literal shared by every call of a macro) is refused with a sentence saying why and where to edit.
  */
 final class ScriptEdits {
-    /** Replace [start, end) of the text with {@code text}; {@code what} says what changes, for the status line. */
+    /** Replace [start, end) of the text with {@code text}; {@code what} says what changes, as a sentence for the status line. */
     record Edit(int start, int end, String text, String what) {
         String applyTo(String script) { return script.substring(0, start) + text + script.substring(end); }
     }
@@ -57,7 +57,7 @@ final class ScriptEdits {
                     throw new Refused("'" + attribute + "' of " + where + " is the variable '" + e.name() + "', which is not "
                             + "one plain literal assigned once: edit it in the script (line " + line + ")");
                 }
-                return new Edit(def.start(), def.end(), literal, "variable " + e.name() + " (line " + lineOf(script, def.start()) + ")");
+                return new Edit(def.start(), def.end(), literal, "changed the variable " + e.name() + " (line " + lineOf(script, def.start()) + ")");
             }
             case PARAMETER -> {
                 Expr arg = call == null || !call.parameters().equals(object.macroParameters()) ? null : call.argument(e.name());
@@ -69,7 +69,7 @@ final class ScriptEdits {
                     throw new Refused("'" + attribute + "' comes from the argument " + e.name() + " = " + arg.text() + " of the call "
                             + call.macro() + "(…) at line " + call.span().line() + ", which is not a plain literal: edit the call");
                 }
-                return new Edit(arg.start(), arg.end(), literal, "argument " + e.name() + " of " + call.macro() + "(…) at line "
+                return new Edit(arg.start(), arg.end(), literal, "changed the argument " + e.name() + " of " + call.macro() + "(…) at line "
                         + call.span().line());
             }
             case EXPRESSION, OBJECT -> throw new Refused("'" + attribute + "' of " + where + " is computed by " + e.text()
@@ -79,7 +79,7 @@ final class ScriptEdits {
                     throw new Refused("'" + attribute + "' of " + where + " is written inside a macro and shared by every call of it:"
                             + " change it there, line " + line + (call != null ? ", or pass it as an argument" : ""));
                 }
-                return new Edit(e.start(), e.end(), literal, attribute + " of " + where + " (line " + line + ")");
+                return new Edit(e.start(), e.end(), literal, "changed " + attribute + " of " + where + " (line " + line + ")");
             }
         }
     }
@@ -90,7 +90,7 @@ final class ScriptEdits {
         int close = object.closeBrace();
         int lastEnd = -1;
         for (Expr a : object.attributes().values()) lastEnd = Math.max(lastEnd, a.end());
-        String what = attribute + " added to " + object.type() + " (line " + object.span().line() + ")";
+        String what = "added " + attribute + " to " + object.type() + " (line " + object.span().line() + ")";
         if (lastEnd < 0) {
             int open = script.indexOf('{', object.span().start());
             String inside = script.substring(open + 1, close);

@@ -3,7 +3,7 @@ package dev.crt.lang;
 /**
  * Prints what recording a source map costs a compile: the scripts of {@link CompileSpeed}, each
  * compiled without and with the map in turn (interleaved, so that the machine's load hits both
- * alike), best of 15 after 5 warm-up rounds.
+ * alike), best of 30 after 10 warm-up rounds, the order alternating.
  * Run: {@code mvn -q -o test-compile dependency:build-classpath -Dmdep.outputFile=target/cp.txt}, then
  * {@code java -cp "target/classes:target/test-classes:$(cat target/cp.txt)" dev.crt.lang.SourceMapSpeed}.
  */
@@ -23,9 +23,17 @@ public final class SourceMapSpeed {
         CompileOptions plain = CompileOptions.DEFAULT, mapped = CompileOptions.DEFAULT.withSourceMap();
         for (String[] s : scripts) {
             double without = Double.MAX_VALUE, with = Double.MAX_VALUE;
-            for (int i = 0; i < 20; i++) {
-                double a = millis(s[1], plain), b = millis(s[1], mapped);
-                if (i >= 5) {
+            for (int i = 0; i < 40; i++) {
+                // Alternate which goes first, so that neither always runs right after the other's garbage.
+                double a, b;
+                if (i % 2 == 0) {
+                    a = millis(s[1], plain);
+                    b = millis(s[1], mapped);
+                } else {
+                    b = millis(s[1], mapped);
+                    a = millis(s[1], plain);
+                }
+                if (i >= 10) {
                     without = Math.min(without, a);
                     with = Math.min(with, b);
                 }

@@ -259,6 +259,15 @@ class NavigatorGuiTest {
         assertThat(onEdt(() -> studio.objects().properties().message().getAccessibleContext().getAccessibleName()))
                 .isEqualTo("Properties message");
         assertThat(text()).isEqualTo(beforeRefusal);
+
+        // The call's own node edits its literal arguments.
+        clickNode("Entities/row(3, 0.2)");
+        waitFor("the call's properties", 5, () -> studio.objects().properties().shown() != null
+                && studio.objects().properties().shown().key().equals("Entities/row(3, 0.2)"));
+        edit("n", "2");
+        waitFor("the count rewritten", 5, () -> text().contains("row(2, 0.2)"));
+        compiled();
+        assertThat(onEdt(() -> studio.model().current().result().scene().entities())).hasSize(5);
     }
 
     @Test

@@ -86,10 +86,14 @@ final class SourceRecorder {
 
     SourceMap finish(List<EntityValue> placed) {
         List<MacroCall> calls = new ArrayList<>(placed.size());
-        for (EntityValue e : placed) {
-            EntityValue v = e;
-            while (v instanceof EntityValue.Modified m) v = m.before();
-            calls.add(madeBy.get(((EntityValue.Built) v).entity()));
+        if (madeBy.isEmpty()) {
+            calls.addAll(java.util.Collections.nCopies(placed.size(), null));
+        } else {
+            for (EntityValue e : placed) {
+                EntityValue v = e;
+                while (v instanceof EntityValue.Modified m) v = m.before();
+                calls.add(madeBy.get(((EntityValue.Built) v).entity()));
+            }
         }
         Map<String, Expr> definitions = new HashMap<>();
         assignments.forEach((name, all) -> {
