@@ -140,6 +140,22 @@ final class ScriptEditor extends JPanel implements ScriptDocument.Listener {
         area.requestFocusInWindow();
     }
 
+    /**
+     * Selects the code in [start, end) and scrolls to it without taking the focus: another panel
+     * (the live view) asked, and its keys must keep working.
+     */
+    void showCode(int start, int end) {
+        int length = document.text().getLength();
+        int from = Math.max(0, Math.min(start, length));
+        area.select(from, Math.max(from, Math.min(end, length)));
+        try {
+            var r = area.modelToView2D(from);
+            if (r != null) area.scrollRectToVisible(r.getBounds());
+        } catch (BadLocationException e) {
+            // The offset was clamped above; nothing to scroll to otherwise.
+        }
+    }
+
     /** Puts the caret at 1-based {@code line}, {@code column}. */
     void goTo(int line, int column) {
         Element root = document.text().getDefaultRootElement();

@@ -79,6 +79,7 @@ final class StudioWindow implements StudioModel.Listener {
     private final RenderView renderView = new RenderView();
     private final JLabel renderInfo = new JLabel("F5 renders the current script");
     private final ConsolePanel console = new ConsolePanel();
+    private final LiveDock live = new LiveDock(model, editors::get, console);
     private final JLabel caretStatus = new JLabel("–");
     private final JLabel renderStatus = new JLabel(" ");
     private final JProgressBar progress = new JProgressBar(0, 1000);
@@ -168,6 +169,8 @@ final class StudioWindow implements StudioModel.Listener {
 
     RenderView renderView() { return renderView; }
 
+    LiveDock live() { return live; }
+
     JLabel renderInfo() { return renderInfo; }
 
     JLabel caretStatus() { return caretStatus; }
@@ -219,6 +222,7 @@ final class StudioWindow implements StudioModel.Listener {
 
         dock.register(new StudioPanel("script", "Script", scriptPanel, 0, 0, 0.5, 0.75));
         dock.register(new StudioPanel("render", "Render", renderPanel, 0.5, 0, 0.5, 0.75));
+        dock.register(new StudioPanel("live", "Live view", live, 0.5, 0, 0.5, 0.75));
         dock.register(new StudioPanel("console", "Console", console, 0, 0.75, 1, 0.25));
     }
 
@@ -269,6 +273,9 @@ final class StudioWindow implements StudioModel.Listener {
                 () -> dock.dockable("render").toFront());
         action("showConsole", "Console", KeyStroke.getKeyStroke(KeyEvent.VK_3, InputEvent.ALT_DOWN_MASK),
                 () -> dock.dockable("console").toFront());
+        action("showLive", "Live view", KeyStroke.getKeyStroke(KeyEvent.VK_4, InputEvent.ALT_DOWN_MASK),
+                () -> dock.dockable("live").toFront());
+        action("copyCamera", "Copy camera to script", ctrlShift(KeyEvent.VK_C), live::copyCameraToScript);
         action("render", "Render", KeyStroke.getKeyStroke(KeyEvent.VK_F5, 0), this::render);
         action("cancel", "Cancel", KeyStroke.getKeyStroke(KeyEvent.VK_ESCAPE, 0), this::cancelRender);
         action("zoomFit", "Fit", ctrl(KeyEvent.VK_0), renderView::zoomToFit);
@@ -302,7 +309,7 @@ final class StudioWindow implements StudioModel.Listener {
             themes.add(item);
             view.add(item);
         }
-        add(view, "toggleTheme", null, "showScript", "showRender", "showConsole", null, "resetLayout");
+        add(view, "toggleTheme", null, "showScript", "showRender", "showConsole", "showLive", null, "copyCamera", null, "resetLayout");
         bar.add(view);
         JMenu render = menu("Render", KeyEvent.VK_R, "render", "cancel", null, "zoomFit", "zoomActual", null, "saveImage");
         // The check box shows the setting; the action behind it toggles it, from the menu or the key.
@@ -603,6 +610,7 @@ final class StudioWindow implements StudioModel.Listener {
         heapTimer.stop();
         recovery.stop();
         compiler.shutdown();
+        live.close();
         dock.dispose();
         frame.dispose();
         onExit.accept(0);
