@@ -84,6 +84,13 @@ final class ScriptEditor extends JPanel implements ScriptDocument.Listener {
         area.getActionMap().put("crt.goToDefinition", new AbstractAction("Go to definition") {
             @Override public void actionPerformed(java.awt.event.ActionEvent e) { goToDefinition(area.getCaretPosition()); }
         });
+        // X11 delivers Ctrl+/ also as a typed '/', which would replace the selection that the
+        // toggle comment of the same key press works on; Ctrl alone never types a character.
+        area.addKeyListener(new java.awt.event.KeyAdapter() {
+            @Override public void keyTyped(KeyEvent e) {
+                if (e.isControlDown() && !e.isAltDown() && !e.isAltGraphDown()) e.consume();
+            }
+        });
         AutoCompletion completion = new AutoCompletion(new CompletionSource());
         completion.setTriggerKey(KeyStroke.getKeyStroke(KeyEvent.VK_SPACE, InputEvent.CTRL_DOWN_MASK));
         completion.setAutoCompleteSingleChoices(true);

@@ -171,6 +171,8 @@ final class StudioWindow implements StudioModel.Listener {
 
     LiveDock live() { return live; }
 
+    DockLayout dock() { return dock; }
+
     JLabel renderInfo() { return renderInfo; }
 
     JLabel caretStatus() { return caretStatus; }
@@ -480,6 +482,8 @@ final class StudioWindow implements StudioModel.Listener {
         ScriptEditor e = currentEditor();
         if (e == null) return;
         frame.toFront();
+        // From a floated panel's window, focus must cross windows, which requestFocusInWindow does not.
+        if (!frame.isFocused()) e.area().requestFocus();
         e.area().requestFocusInWindow();
         SwingUtilities.invokeLater(() -> e.area().requestFocusInWindow());
     }

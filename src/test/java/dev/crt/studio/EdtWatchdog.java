@@ -1,6 +1,5 @@
 package dev.crt.studio;
 
-import java.lang.reflect.InvocationTargetException;
 import javax.swing.SwingUtilities;
 
 /**
@@ -17,12 +16,18 @@ final class EdtWatchdog implements AutoCloseable {
         thread = new Thread(() -> {
             while (running) {
                 long start = System.nanoTime();
+                java.util.concurrent.CountDownLatch ran = new java.util.concurrent.CountDownLatch(1);
+                SwingUtilities.invokeLater(ran::countDown);
                 try {
-                    SwingUtilities.invokeAndWait(() -> {});
+                    // A stall of 250 ms or more: say what the EDT is doing meanwhile, to find the cause.
+                    if (!ran.await(250, java.util.concurrent.TimeUnit.MILLISECONDS)) {
+                        String stack = edtStack();
+                        ran.await();
+                        long ms = (System.nanoTime() - start) / 1_000_000;
+                        System.out.println("EDT watchdog: a stall of " + ms + " ms; 250 ms into it the EDT was at:\n" + stack);
+                    }
                 } catch (InterruptedException e) {
                     return;
-                } catch (InvocationTargetException e) {
-                    throw new IllegalStateException(e);
                 }
                 long waited = System.nanoTime() - start;
                 longestNanos.accumulateAndGet(waited, Math::max);
@@ -35,6 +40,16 @@ final class EdtWatchdog implements AutoCloseable {
         }, "edt-watchdog");
         thread.setDaemon(true);
         thread.start();
+    }
+
+    private static String edtStack() {
+        StringBuilder b = new StringBuilder();
+        for (var e : Thread.getAllStackTraces().entrySet()) {
+            if (!e.getKey().getName().startsWith("AWT-EventQueue")) continue;
+            StackTraceElement[] frames = e.getValue();
+            for (int i = 0; i < Math.min(frames.length, 25); i++) b.append("    at ").append(frames[i]).append('\n');
+        }
+        return b.toString();
     }
 
     long longestMillis() { return longestNanos.get() / 1_000_000; }
