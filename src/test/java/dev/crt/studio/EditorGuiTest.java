@@ -66,7 +66,8 @@ class EditorGuiTest {
 
     @AfterEach
     void closeStudio(org.junit.jupiter.api.TestInfo test) {
-        System.out.println("EDT watchdog, " + test.getDisplayName() + ": longest stall " + watchdog.longestMillis() + " ms");
+        System.out.println("EDT watchdog, " + test.getDisplayName() + ": longest stall " + watchdog.longestMillis()
+                + " ms (robot's waitForIdle apart: " + watchdog.robotSyncMillis() + " ms)");
         if (studio != null) {
             onEdt(() -> {
                 for (ScriptDocument d : studio.model().documents()) if (d.isModified()) d.saved(d.file(), d.diskTime());

@@ -75,7 +75,8 @@ class LiveDockGuiTest {
 
     @AfterEach
     void closeStudio(org.junit.jupiter.api.TestInfo test) {
-        System.out.println("EDT watchdog, " + test.getDisplayName() + ": longest stall " + watchdog.longestMillis() + " ms");
+        System.out.println("EDT watchdog, " + test.getDisplayName() + ": longest stall " + watchdog.longestMillis()
+                + " ms (robot's waitForIdle apart: " + watchdog.robotSyncMillis() + " ms)");
         if (studio != null) {
             onEdt(() -> {
                 for (ScriptDocument d : studio.model().documents()) if (d.isModified()) d.saved(d.file(), d.diskTime());
@@ -96,6 +97,13 @@ class LiveDockGuiTest {
     /** Opens the studio on {@code file}, brings the live view to the front and waits for its first frame. */
     private LiveViewPanel openWithLiveView(Path file) throws IOException {
         studio = GuiTestSupport.openStudio(temp.resolve("home"), List.of(file));
+        // Without a window manager the X server's focus settles a moment after the window maps.
+        int[] steady = {0};
+        waitFor("the editor to hold the focus for half a second", 10, () -> {
+            ScriptEditor e = studio.currentEditor();
+            steady[0] = e != null && e.area().isFocusOwner() ? steady[0] + 1 : 0;
+            return steady[0] >= 25;
+        });
         onEdt(() -> studio.action("showLive").actionPerformed(null));
         waitFor("the live view to start", 20, () -> studio.live().state() != LiveDock.State.STARTING
                 && studio.live().state() != LiveDock.State.NOT_STARTED);
