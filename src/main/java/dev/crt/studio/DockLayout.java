@@ -89,10 +89,13 @@ final class DockLayout {
     void resetLayout() {
         CGrid grid = new CGrid(control);
         for (StudioPanel p : panels) grid.add(p.x(), p.y(), p.width(), p.height(), dockables.get(p.id()));
+        // Panels registered at the same place share a stack; the first registered is in front.
+        for (int i = panels.size() - 1; i >= 0; i--) {
+            StudioPanel p = panels.get(i);
+            grid.select(p.x(), p.y(), p.width(), p.height(), dockables.get(p.id()));
+        }
         control.getContentArea().deploy(grid);
         dockables.values().forEach(d -> d.setVisible(true));
-        // Panels registered at the same place share a stack; the first registered is in front.
-        for (int i = panels.size() - 1; i >= 0; i--) dockables.get(panels.get(i).id()).toFront();
     }
 
     /** Restores the layout saved in {@code file}; false (default layout kept) when there is none or it is unreadable. */
