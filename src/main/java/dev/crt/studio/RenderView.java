@@ -19,6 +19,8 @@ import javax.swing.UIManager;
  */
 final class RenderView extends javax.swing.JPanel {
     private BufferedImage picture;
+    /** The selected entity's outline, the picture's size, drawn over it; or null. */
+    private BufferedImage outline;
     private boolean fit = true;
     private double zoom = 1;
     private double panX, panY;
@@ -80,6 +82,8 @@ final class RenderView extends javax.swing.JPanel {
     void show(BufferedImage image) {
         boolean sameSize = picture != null && image != null && picture.getWidth() == image.getWidth()
                 && picture.getHeight() == image.getHeight();
+        // Another picture (a new render) shows other pixels: the old outline no longer fits it.
+        if (image != picture) outline = null;
         picture = image;
         if (!sameSize) fit = true;
         repaint();
@@ -139,6 +143,15 @@ final class RenderView extends javax.swing.JPanel {
         return new Point(px, py);
     }
 
+    /** Outlines the selected entity: an image of the picture's size, clear but for the outline (null: none). */
+    void setOutline(BufferedImage image) {
+        outline = image;
+        repaint();
+    }
+
+    /** The outline shown over the picture, or null. */
+    BufferedImage outline() { return outline; }
+
     /** The centre of picture pixel (px, py) in this component's coordinates. */
     Point fromPicture(int px, int py) {
         double z = zoom();
@@ -167,6 +180,12 @@ final class RenderView extends javax.swing.JPanel {
         if (sx0 < sx1 && sy0 < sy1) {
             g2.drawImage(picture, (int) Math.round(ox + sx0 * z), (int) Math.round(oy + sy0 * z),
                     (int) Math.round(ox + sx1 * z), (int) Math.round(oy + sy1 * z), sx0, sy0, sx1, sy1, null);
+            BufferedImage o = outline;
+            if (o != null && o.getWidth() == picture.getWidth() && o.getHeight() == picture.getHeight()) {
+                g2.setRenderingHint(RenderingHints.KEY_INTERPOLATION, RenderingHints.VALUE_INTERPOLATION_NEAREST_NEIGHBOR);
+                g2.drawImage(o, (int) Math.round(ox + sx0 * z), (int) Math.round(oy + sy0 * z),
+                        (int) Math.round(ox + sx1 * z), (int) Math.round(oy + sy1 * z), sx0, sy0, sx1, sy1, null);
+            }
         }
         g2.dispose();
     }

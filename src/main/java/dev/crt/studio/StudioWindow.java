@@ -80,6 +80,7 @@ final class StudioWindow implements StudioModel.Listener {
     private final JLabel renderInfo = new JLabel("F5 renders the current script");
     private final ConsolePanel console = new ConsolePanel();
     private final LiveDock live = new LiveDock(model, editors::get, console);
+    private final RenderSelection renderSelection = new RenderSelection(renderView);
     private final JLabel caretStatus = new JLabel("–");
     private final JLabel renderStatus = new JLabel(" ");
     private final JProgressBar progress = new JProgressBar(0, 1000);
@@ -121,6 +122,7 @@ final class StudioWindow implements StudioModel.Listener {
         model.addListener(compiler);
         model.addListener(recovery);
         model.addListener(this);
+        model.addListener(renderSelection);
         buildActions();
         buildPanels();
         frame.setJMenuBar(buildMenus());
@@ -194,6 +196,9 @@ final class StudioWindow implements StudioModel.Listener {
     /** Shows the window, offers to recover unsaved work of a studio that died, and opens {@code files}. */
     void show(List<Path> files) {
         frame.setVisible(true);
+        // The X input method opens on the first key press and reads the locale's compose tables
+        // meanwhile (0.1 s, over 1 s on a loaded machine, on the EDT): open it now, not on the first key.
+        SwingUtilities.invokeLater(() -> frame.getInputContext().getInputMethodControlObject());
         offerRecovery();
         openAll(files);
         if (model.documents().isEmpty()) newDocument();
@@ -615,6 +620,7 @@ final class StudioWindow implements StudioModel.Listener {
         recovery.stop();
         compiler.shutdown();
         live.close();
+        renderSelection.shutdown();
         dock.dispose();
         frame.dispose();
         onExit.accept(0);
@@ -755,6 +761,7 @@ final class StudioWindow implements StudioModel.Listener {
                 job = null;
                 lastRender = r;
                 renderView.show(r.picture());
+                renderSelection.rendered(d, r);
                 progress.setVisible(false);
                 RenderStats stats = r.renderer().stats();
                 Settings s = r.scene().settings();

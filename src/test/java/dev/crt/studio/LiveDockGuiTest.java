@@ -204,12 +204,47 @@ class LiveDockGuiTest {
         assertThat(onEdt(() -> studio.currentEditor().area().getSelectedText())).startsWith("Sphere { center -> vec3(-1.5");
         assertThat(onEdt(() -> studio.currentEditor().area().getCaretLineNumber() + 1)).isEqualTo(11);
 
-        // A pick in the render view selects the same entity in the live view.
+        // The render view outlines what the live view selected ...
         keys.press(KeyEvent.VK_F5);
         waitFor("the render to finish", 30, () -> studio.lastRender() != null);
+        int[] renderedIds = Renderer.prepare(compile(onEdt(() -> studio.currentEditor().area().getText()), file).scene()).idPass();
+        waitFor("the red sphere outlined in the render view", 10, () -> studio.renderView().outline() != null);
+        assertOutlines(onEdt(() -> studio.renderView().outline()), renderedIds, 0);
+        // ... and a pick there selects the same entity in the live view.
         Point bluePicture = onEdt(() -> studio.renderView().fromPicture(120, 60));
         robot.click(studio.renderView(), bluePicture, MouseButton.LEFT_BUTTON, 1);
         waitFor("the blue sphere selected in the live view", 10, () -> view.selected() == 1 && studio.model().selectedIndex() == 1);
+        waitFor("the blue sphere outlined", 10, () -> {
+            BufferedImage o = studio.renderView().outline();
+            return o != null && (o.getRGB(120, 60) >>> 24) == 0 && opaque(o) > 0 && renderedIds[firstOpaque(o)] == 1;
+        });
+        assertOutlines(onEdt(() -> studio.renderView().outline()), renderedIds, 1);
+    }
+
+    private static int opaque(BufferedImage o) {
+        int n = 0;
+        for (int y = 0; y < o.getHeight(); y++) for (int x = 0; x < o.getWidth(); x++) if ((o.getRGB(x, y) >>> 24) != 0) n++;
+        return n;
+    }
+
+    private static int firstOpaque(BufferedImage o) {
+        for (int i = 0; i < o.getWidth() * o.getHeight(); i++) if ((o.getRGB(i % o.getWidth(), i / o.getWidth()) >>> 24) != 0) return i;
+        return -1;
+    }
+
+    /** The outline covers only pixels of entity {@code id}, and every one of its pixels next to another id. */
+    private static void assertOutlines(BufferedImage o, int[] ids, int id) {
+        int w = o.getWidth(), h = o.getHeight(), edges = 0;
+        for (int y = 1; y < h - 1; y++) {
+            for (int x = 1; x < w - 1; x++) {
+                int i = y * w + x;
+                boolean drawn = (o.getRGB(x, y) >>> 24) != 0;
+                boolean edge = ids[i] == id && (ids[i - 1] != id || ids[i + 1] != id || ids[i - w] != id || ids[i + w] != id);
+                assertThat(drawn).as("outline at %d,%d", x, y).isEqualTo(edge);
+                if (edge) edges++;
+            }
+        }
+        assertThat(edges).isGreaterThan(20);
     }
 
     /** A pixel that shows entity {@code id} in {@code after} and nothing in {@code before}, away from any edge. */
@@ -283,7 +318,7 @@ class LiveDockGuiTest {
         assertThat(studioProcess.waitFor(60, TimeUnit.SECONDS)).isTrue();
         assertThat(studioProcess.exitValue()).as("exit code; output:%n%s", out).isZero();
         String said = out.toString();
-        assertThat(said).contains("window showing: true", "state: UNAVAILABLE", "editor text intact: true");
+        assertThat(said).contains("window showing: true", "state: UNAVAILABLE", "panel showing: true", "editor text intact: true");
         String message = said.lines().filter(l -> l.startsWith("message: ")).findFirst().orElseThrow().substring(9);
         assertThat(message).startsWith("OpenGL is not available: the EGL library").doesNotContain("\n").doesNotContain("Exception");
         assertThat(said).doesNotContain("\tat ");

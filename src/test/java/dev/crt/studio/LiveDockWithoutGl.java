@@ -1,5 +1,6 @@
 package dev.crt.studio;
 
+import java.awt.KeyboardFocusManager;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
@@ -19,8 +20,15 @@ public final class LiveDockWithoutGl {
         SwingUtilities.invokeAndWait(() -> {
             studio[0] = new StudioWindow(paths);
             studio[0].show(List.of(Path.of(args[1])));
-            studio[0].action("showLive").actionPerformed(null);
         });
+        // Alt+4, once the window has settled (the editor holding the focus for half a second).
+        int steady = 0;
+        for (int i = 0; i < 500 && steady < 25; i++) {
+            Thread.sleep(20);
+            boolean focused = KeyboardFocusManager.getCurrentKeyboardFocusManager().getFocusOwner() == studio[0].currentEditor().area();
+            steady = focused ? steady + 1 : 0;
+        }
+        SwingUtilities.invokeAndWait(() -> studio[0].action("showLive").actionPerformed(null));
         long end = System.nanoTime() + 30_000_000_000L;
         LiveDock.State[] state = new LiveDock.State[1];
         do {
@@ -30,6 +38,7 @@ public final class LiveDockWithoutGl {
         String text = Files.readString(Path.of(args[1]));
         SwingUtilities.invokeAndWait(() -> {
             System.out.println("state: " + state[0]);
+            System.out.println("panel showing: " + studio[0].live().isShowing());
             System.out.println("message: " + studio[0].live().message());
             System.out.println("window showing: " + studio[0].frame().isShowing());
             System.out.println("editor text intact: " + studio[0].currentEditor().area().getText().equals(text));
