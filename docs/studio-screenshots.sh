@@ -41,6 +41,12 @@ shot() { sleep "$2"; import -window root "$out/$1.png"; echo "wrote docs/images/
 xdotool key F5
 shot light-render "${RENDER_WAIT:-15}"
 
+# The live view (OpenGL, offscreen through EGL) in the place of the Render panel, then back.
+xdotool key alt+4
+shot light-live "${LIVE_WAIT:-8}"
+xdotool key alt+2
+sleep 1
+
 xdotool key ctrl+End
 xdotool type --delay 40 $'\nbig = Sphere { radius -> size }'
 sleep 2

@@ -416,6 +416,8 @@ public final class LiveViewPanel extends JPanel implements AutoCloseable {
     private final class Keys extends KeyAdapter {
         @Override
         public void keyPressed(KeyEvent e) {
+            // Ctrl+Z, Alt+1 and the like are the studio's shortcuts, not the view's Z and 1.
+            if (e.isControlDown() || e.isAltDown() || e.isMetaDown()) return;
             key(e.getKeyCode(), e.isShiftDown());
         }
     }

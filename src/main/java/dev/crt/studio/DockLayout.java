@@ -12,7 +12,16 @@ import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.awt.KeyEventDispatcher;
+import java.awt.KeyboardFocusManager;
+import java.awt.Window;
+import java.awt.event.KeyEvent;
+import javax.swing.Action;
+import javax.swing.JComponent;
 import javax.swing.JFrame;
+import javax.swing.JRootPane;
+import javax.swing.KeyStroke;
+import javax.swing.SwingUtilities;
 
 /**
  * The studio's docking area: a registry of {@link StudioPanel}s, each a dockable the user can move,
@@ -20,12 +29,44 @@ import javax.swing.JFrame;
  */
 final class DockLayout {
     private final CControl control;
+    private final JFrame frame;
+    /**
+     * A floated panel lives in a window of its own, where the key bindings of the studio's root
+     * pane do not reach (and where the text components consume Ctrl+N and the like): there the
+     * studio's shortcuts with Ctrl, Alt or a function key go straight to those bindings. Plain
+     * keys (Esc, letters) stay with the panel.
+     */
+    private final KeyEventDispatcher floatingKeys = this::forwardFromFloatingWindow;
     private final List<StudioPanel> panels = new ArrayList<>();
     private final Map<String, DefaultSingleCDockable> dockables = new LinkedHashMap<>();
 
     DockLayout(JFrame frame) {
+        this.frame = frame;
         control = new CControl(frame);
         control.setTheme(ThemeMap.KEY_FLAT_THEME);
+        KeyboardFocusManager.getCurrentKeyboardFocusManager().addKeyEventDispatcher(floatingKeys);
+    }
+
+    private boolean forwardFromFloatingWindow(KeyEvent e) {
+        if (e.getID() != KeyEvent.KEY_PRESSED || !(e.isControlDown() || e.isAltDown() || isFunctionKey(e.getKeyCode()))) return false;
+        Window w = SwingUtilities.getWindowAncestor(e.getComponent());
+        if (w == null && e.getComponent() instanceof Window self) w = self;
+        if (w == null || w == frame || !ownedByFrame(w)) return false;
+        JRootPane root = frame.getRootPane();
+        KeyStroke key = KeyStroke.getKeyStrokeForEvent(e);
+        Object name = root.getInputMap(JComponent.WHEN_IN_FOCUSED_WINDOW).get(key);
+        Action action = name == null ? null : root.getActionMap().get(name);
+        if (action == null || !action.isEnabled()) return false;
+        SwingUtilities.notifyAction(action, key, e, root, e.getModifiersEx());
+        e.consume();
+        return true;
+    }
+
+    private static boolean isFunctionKey(int code) { return code >= KeyEvent.VK_F1 && code <= KeyEvent.VK_F12; }
+
+    private boolean ownedByFrame(Window w) {
+        for (Window o = w.getOwner(); o != null; o = o.getOwner()) if (o == frame) return true;
+        return false;
     }
 
     CControl control() { return control; }
@@ -48,12 +89,10 @@ final class DockLayout {
     void resetLayout() {
         CGrid grid = new CGrid(control);
         for (StudioPanel p : panels) grid.add(p.x(), p.y(), p.width(), p.height(), dockables.get(p.id()));
-        // Panels registered at the same place stack as tabs; the first registered is the one in front.
-        java.util.Set<java.util.List<Double>> places = new java.util.HashSet<>();
-        for (StudioPanel p : panels) {
-            if (places.add(java.util.List.of(p.x(), p.y(), p.width(), p.height()))) {
-                grid.select(p.x(), p.y(), p.width(), p.height(), dockables.get(p.id()));
-            }
+        // Panels registered at the same place share a stack; the first registered is in front.
+        for (int i = panels.size() - 1; i >= 0; i--) {
+            StudioPanel p = panels.get(i);
+            grid.select(p.x(), p.y(), p.width(), p.height(), dockables.get(p.id()));
         }
         control.getContentArea().deploy(grid);
         dockables.values().forEach(d -> d.setVisible(true));
@@ -85,5 +124,8 @@ final class DockLayout {
         }
     }
 
-    void dispose() { control.destroy(); }
+    void dispose() {
+        KeyboardFocusManager.getCurrentKeyboardFocusManager().removeKeyEventDispatcher(floatingKeys);
+        control.destroy();
+    }
 }

@@ -25,9 +25,12 @@ final class FindBar extends JPanel {
     private final JButton replaceAll = new JButton("Replace all");
     private final JCheckBox matchCase = new JCheckBox("Match case");
     private final JLabel status = new JLabel(" ");
+    private final JPanel replaceRow = new JPanel(new FlowLayout(FlowLayout.LEADING, 4, 2));
 
     FindBar(RTextArea area) {
-        super(new FlowLayout(FlowLayout.LEADING, 4, 2));
+        // Two rows: in one, both do not fit beside the find field in a half-window editor.
+        super();
+        setLayout(new javax.swing.BoxLayout(this, javax.swing.BoxLayout.Y_AXIS));
         this.area = area;
         find.setName("find");
         find.getAccessibleContext().setAccessibleName("Find");
@@ -37,17 +40,20 @@ final class FindBar extends JPanel {
         JButton previous = new JButton("Previous");
         JButton close = new JButton("×");
         close.getAccessibleContext().setAccessibleName("Close find");
-        add(new JLabel("Find:"));
-        add(find);
-        add(previous);
-        add(next);
-        add(matchCase);
-        add(replaceLabel);
-        add(replace);
-        add(replaceOne);
-        add(replaceAll);
-        add(status);
-        add(close);
+        JPanel findRow = new JPanel(new FlowLayout(FlowLayout.LEADING, 4, 2));
+        findRow.add(new JLabel("Find:"));
+        findRow.add(find);
+        findRow.add(previous);
+        findRow.add(next);
+        findRow.add(matchCase);
+        findRow.add(close);
+        findRow.add(status);
+        replaceRow.add(replaceLabel);
+        replaceRow.add(replace);
+        replaceRow.add(replaceOne);
+        replaceRow.add(replaceAll);
+        add(findRow);
+        add(replaceRow);
         next.addActionListener(e -> find(true));
         previous.addActionListener(e -> find(false));
         find.addActionListener(e -> find(true));
@@ -64,7 +70,7 @@ final class FindBar extends JPanel {
 
     /** Shows the bar, with the replace fields when {@code withReplace}, seeded with the selection. */
     void open(boolean withReplace) {
-        for (JComponent c : new JComponent[] {replaceLabel, replace, replaceOne, replaceAll}) c.setVisible(withReplace);
+        replaceRow.setVisible(withReplace);
         String selected = area.getSelectedText();
         if (selected != null && !selected.contains("\n")) find.setText(selected);
         setVisible(true);

@@ -21,6 +21,8 @@ final class RenderView extends javax.swing.JPanel {
     private BufferedImage picture;
     /** Drawn over the picture, same size (the selected object's outline), or null. */
     private BufferedImage overlay;
+    /** The selected entity's outline, the picture's size, drawn over it; or null. */
+    private BufferedImage outline;
     private boolean fit = true;
     private double zoom = 1;
     private double panX, panY;
@@ -83,6 +85,8 @@ final class RenderView extends javax.swing.JPanel {
         boolean sameSize = picture != null && image != null && picture.getWidth() == image.getWidth()
                 && picture.getHeight() == image.getHeight();
         if (image != picture) overlay = null;
+        // Another picture (a new render) shows other pixels: the old outline no longer fits it.
+        if (image != picture) outline = null;
         picture = image;
         if (!sameSize) fit = true;
         repaint();
@@ -150,6 +154,15 @@ final class RenderView extends javax.swing.JPanel {
         return new Point(px, py);
     }
 
+    /** Outlines the selected entity: an image of the picture's size, clear but for the outline (null: none). */
+    void setOutline(BufferedImage image) {
+        outline = image;
+        repaint();
+    }
+
+    /** The outline shown over the picture, or null. */
+    BufferedImage outline() { return outline; }
+
     /** The centre of picture pixel (px, py) in this component's coordinates. */
     Point fromPicture(int px, int py) {
         double z = zoom();
@@ -178,8 +191,8 @@ final class RenderView extends javax.swing.JPanel {
         if (sx0 < sx1 && sy0 < sy1) {
             g2.drawImage(picture, (int) Math.round(ox + sx0 * z), (int) Math.round(oy + sy0 * z),
                     (int) Math.round(ox + sx1 * z), (int) Math.round(oy + sy1 * z), sx0, sy0, sx1, sy1, null);
-            BufferedImage over = overlay;
-            if (over != null && over.getWidth() == picture.getWidth() && over.getHeight() == picture.getHeight()) {
+            for (BufferedImage over : new BufferedImage[] {overlay, outline}) {
+                if (over == null || over.getWidth() != picture.getWidth() || over.getHeight() != picture.getHeight()) continue;
                 g2.setRenderingHint(RenderingHints.KEY_INTERPOLATION, RenderingHints.VALUE_INTERPOLATION_NEAREST_NEIGHBOR);
                 g2.drawImage(over, (int) Math.round(ox + sx0 * z), (int) Math.round(oy + sy0 * z),
                         (int) Math.round(ox + sx1 * z), (int) Math.round(oy + sy1 * z), sx0, sy0, sx1, sy1, null);

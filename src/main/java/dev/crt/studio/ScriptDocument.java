@@ -36,6 +36,8 @@ public final class ScriptDocument {
     private Path file;
     private FileTime diskTime;
     private boolean modified;
+    /** The text as last loaded or saved: undoing back to it makes the script unmodified again. */
+    private String savedText = "";
     private long version;
     private CompileResult result;
     private long resultVersion = -1;
@@ -53,7 +55,8 @@ public final class ScriptDocument {
     private void edited() {
         version++;
         if (loading) return;
-        modified = true;
+        // Comparing lengths first keeps typing into a long script from copying it on every key.
+        modified = text.getLength() != savedText.length() || !content().equals(savedText);
         fire();
     }
 
@@ -71,6 +74,7 @@ public final class ScriptDocument {
         file = from;
         diskTime = time;
         modified = false;
+        savedText = content;
         fire();
     }
 
@@ -99,6 +103,7 @@ public final class ScriptDocument {
     FileTime diskTime() { return diskTime; }
 
     void saved(Path to, FileTime time) {
+        savedText = content();
         file = to;
         diskTime = time;
         modified = false;

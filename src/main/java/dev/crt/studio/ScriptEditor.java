@@ -84,6 +84,13 @@ final class ScriptEditor extends JPanel implements ScriptDocument.Listener {
         area.getActionMap().put("crt.goToDefinition", new AbstractAction("Go to definition") {
             @Override public void actionPerformed(java.awt.event.ActionEvent e) { goToDefinition(area.getCaretPosition()); }
         });
+        // X11 delivers Ctrl+/ also as a typed '/', which would replace the selection that the
+        // toggle comment of the same key press works on; Ctrl alone never types a character.
+        area.addKeyListener(new java.awt.event.KeyAdapter() {
+            @Override public void keyTyped(KeyEvent e) {
+                if (e.isControlDown() && !e.isAltDown() && !e.isAltGraphDown()) e.consume();
+            }
+        });
         AutoCompletion completion = new AutoCompletion(new CompletionSource());
         completion.setTriggerKey(KeyStroke.getKeyStroke(KeyEvent.VK_SPACE, InputEvent.CTRL_DOWN_MASK));
         completion.setAutoCompleteSingleChoices(true);
@@ -138,6 +145,22 @@ final class ScriptEditor extends JPanel implements ScriptDocument.Listener {
             // The offset was clamped above; nothing to scroll to otherwise.
         }
         area.requestFocusInWindow();
+    }
+
+    /**
+     * Selects the code in [start, end) and scrolls to it without taking the focus: another panel
+     * (the live view) asked, and its keys must keep working.
+     */
+    void showCode(int start, int end) {
+        int length = document.text().getLength();
+        int from = Math.max(0, Math.min(start, length));
+        area.select(from, Math.max(from, Math.min(end, length)));
+        try {
+            var r = area.modelToView2D(from);
+            if (r != null) area.scrollRectToVisible(r.getBounds());
+        } catch (BadLocationException e) {
+            // The offset was clamped above; nothing to scroll to otherwise.
+        }
     }
 
     /** Puts the caret at 1-based {@code line}, {@code column}. */

@@ -46,6 +46,9 @@ public final class StudioModel {
     private ScriptDocument current;
     private int untitled;
     private double time;
+    private ScriptDocument selectedDocument;
+    private Entity selectedEntity;
+    private int selectedIndex = -1;
 
     public List<ScriptDocument> documents() { return List.copyOf(documents); }
 
@@ -96,11 +99,20 @@ public final class StudioModel {
         documents.remove(at);
         d.removeListener(relay);
         listeners.forEach(l -> l.closed(d));
+        if (selectedDocument == d) select(d, null, -1);
         if (current == d) setCurrent(documents.isEmpty() ? null : documents.get(Math.min(at, documents.size() - 1)));
     }
 
+    /**
+     * Selects {@code entity}, number {@code index} of {@code d}'s scene (null and −1 clear the
+     * selection) and tells every listener, also the panel that asked: the render view, the live
+     * view and the navigator all select through here, so each shows what another picked.
+     */
     public void select(ScriptDocument d, Entity entity, int index) {
-        listeners.forEach(l -> l.selected(d, entity, index));
+        selectedDocument = entity == null ? null : d;
+        selectedEntity = entity;
+        selectedIndex = entity == null ? -1 : index;
+        listeners.forEach(l -> l.selected(d, entity, selectedIndex));
     }
 
     /** The scene time t the studio looks at: 0 until the animation panel is scrubbed. */
@@ -111,6 +123,23 @@ public final class StudioModel {
         time = t;
         listeners.forEach(l -> l.timeChanged(t));
     }
+
+    /** Selects entity {@code index} of the scene of {@code d}'s latest compile; out of range (or −1) clears. */
+    public void select(ScriptDocument d, int index) {
+        CompileResult r = d == null ? null : d.result();
+        List<Entity> entities = r == null || r.scene() == null ? List.of() : r.scene().entities();
+        if (index >= 0 && index < entities.size()) select(d, entities.get(index), index);
+        else select(d, null, -1);
+    }
+
+    /** The document whose entity is selected, or null when nothing is. */
+    public ScriptDocument selectedDocument() { return selectedDocument; }
+
+    /** The selected entity, or null. */
+    public Entity selectedEntity() { return selectedEntity; }
+
+    /** The selected entity's index in its scene's entities(), or −1. */
+    public int selectedIndex() { return selectedIndex; }
 
     public void addListener(Listener l) { listeners.add(l); }
 

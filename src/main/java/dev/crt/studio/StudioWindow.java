@@ -83,6 +83,8 @@ final class StudioWindow implements StudioModel.Listener {
     private final Throughput throughput = new Throughput();
     private final AnimationPanel animation = new AnimationPanel(model, session, throughput, console);
     private final SystemPanel system = new SystemPanel(throughput);
+    private final LiveDock live = new LiveDock(model, editors::get, console);
+    private final RenderSelection renderSelection = new RenderSelection(renderView);
     private final JLabel caretStatus = new JLabel("–");
     private final JLabel renderStatus = new JLabel(" ");
     private final JProgressBar progress = new JProgressBar(0, 1000);
@@ -126,6 +128,7 @@ final class StudioWindow implements StudioModel.Listener {
         model.addListener(compiler);
         model.addListener(recovery);
         model.addListener(this);
+        model.addListener(renderSelection);
         buildActions();
         buildPanels();
         frame.setJMenuBar(buildMenus());
@@ -178,6 +181,10 @@ final class StudioWindow implements StudioModel.Listener {
 
     SystemPanel system() { return system; }
 
+    LiveDock live() { return live; }
+
+    DockLayout dock() { return dock; }
+
     JLabel renderInfo() { return renderInfo; }
 
     JLabel caretStatus() { return caretStatus; }
@@ -201,6 +208,9 @@ final class StudioWindow implements StudioModel.Listener {
     /** Shows the window, offers to recover unsaved work of a studio that died, and opens {@code files}. */
     void show(List<Path> files) {
         frame.setVisible(true);
+        // The X input method opens on the first key press and reads the locale's compose tables
+        // meanwhile (0.1 s, over 1 s on a loaded machine, on the EDT): open it now, not on the first key.
+        SwingUtilities.invokeLater(() -> frame.getInputContext().getInputMethodControlObject());
         offerRecovery();
         openAll(files);
         if (model.documents().isEmpty()) newDocument();
@@ -231,11 +241,12 @@ final class StudioWindow implements StudioModel.Listener {
 
         dock.register(new StudioPanel("script", "Script", scriptPanel, 0.24, 0, 0.38, 0.75));
         dock.register(new StudioPanel("render", "Render", renderPanel, 0.62, 0, 0.38, 0.75));
+        dock.register(new StudioPanel("live", "Live view", live, 0.62, 0, 0.38, 0.75));
         objects = new ObjectPanels(this);
         objects.panels().forEach(dock::register);
         dock.register(new StudioPanel("console", "Console", console, 0, 0.75, 1, 0.25));
         // Stacked behind the render view: frames are pictures too, and want its room.
-        dock.register(new StudioPanel("animation", "Animation", animation, 0.5, 0, 0.5, 0.75));
+        dock.register(new StudioPanel("animation", "Animation", animation, 0.62, 0, 0.38, 0.75));
         model.addListener(animation);
         dock.register(new StudioPanel("system", "System", system, 0, 0.75, 1, 0.25));
     }
@@ -291,6 +302,9 @@ final class StudioWindow implements StudioModel.Listener {
                 () -> dock.dockable("animation").toFront());
         action("showSystem", "System", KeyStroke.getKeyStroke(KeyEvent.VK_8, InputEvent.ALT_DOWN_MASK),
                 () -> dock.dockable("system").toFront());
+        action("showLive", "Live view", KeyStroke.getKeyStroke(KeyEvent.VK_4, InputEvent.ALT_DOWN_MASK),
+                () -> dock.dockable("live").toFront());
+        action("copyCamera", "Copy camera to script", ctrlShift(KeyEvent.VK_C), live::copyCameraToScript);
         action("render", "Render", KeyStroke.getKeyStroke(KeyEvent.VK_F5, 0), this::render);
         action("cancel", "Cancel", KeyStroke.getKeyStroke(KeyEvent.VK_ESCAPE, 0), this::cancelRender);
         action("zoomFit", "Fit", ctrl(KeyEvent.VK_0), renderView::zoomToFit);
@@ -326,7 +340,8 @@ final class StudioWindow implements StudioModel.Listener {
             themes.add(item);
             view.add(item);
         }
-        add(view, "toggleTheme", null, "showScript", "showRender", "showConsole", "showAnimation", "showSystem", null, "resetLayout");
+        add(view, "toggleTheme", null, "showScript", "showRender", "showConsole", "showLive", "showAnimation", "showSystem", null,
+                "copyCamera", null, "resetLayout");
         bar.add(view);
         JMenu render = menu("Render", KeyEvent.VK_R, "render", "cancel", null, "zoomFit", "zoomActual", null, "saveImage",
                 "sceneSettings");
@@ -499,6 +514,8 @@ final class StudioWindow implements StudioModel.Listener {
         ScriptEditor e = currentEditor();
         if (e == null) return;
         frame.toFront();
+        // From a floated panel's window, focus must cross windows, which requestFocusInWindow does not.
+        if (!frame.isFocused()) e.area().requestFocus();
         e.area().requestFocusInWindow();
         SwingUtilities.invokeLater(() -> e.area().requestFocusInWindow());
     }
@@ -630,6 +647,8 @@ final class StudioWindow implements StudioModel.Listener {
         heapTimer.stop();
         recovery.stop();
         compiler.shutdown();
+        live.close();
+        renderSelection.shutdown();
         dock.dispose();
         frame.dispose();
         onExit.accept(0);
@@ -771,6 +790,7 @@ final class StudioWindow implements StudioModel.Listener {
                 lastRender = r;
                 renderView.show(r.picture());
                 objects.rendered(r);
+                renderSelection.rendered(d, r);
                 progress.setVisible(false);
                 RenderStats stats = r.renderer().stats();
                 long end = System.nanoTime();

@@ -75,7 +75,8 @@ class StudioGuiTest {
     @AfterEach
     void closeStudio(org.junit.jupiter.api.TestInfo test) {
         longestStall = Math.max(longestStall, watchdog.longestMillis());
-        System.out.println("EDT watchdog, " + test.getDisplayName() + ": longest stall " + watchdog.longestMillis() + " ms");
+        System.out.println("EDT watchdog, " + test.getDisplayName() + ": longest stall " + watchdog.longestMillis()
+                + " ms (robot's waitForIdle apart: " + watchdog.robotSyncMillis() + " ms)");
         if (studio != null) {
             onEdt(() -> {
                 // Leave nothing unsaved so that quitting asks nothing.

@@ -1,0 +1,49 @@
+package dev.crt.studio;
+
+import java.awt.KeyboardFocusManager;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import javax.swing.SwingUtilities;
+
+/**
+ * A studio in a process of its own whose OpenGL cannot start (the test points LWJGL at an EGL
+ * library that does not exist): brings the live view to the front, waits for it to give up, and
+ * prints what a user would see, then quits. Arguments: the home folder, the script.
+ */
+public final class LiveDockWithoutGl {
+    private LiveDockWithoutGl() {}
+
+    public static void main(String[] args) throws Exception {
+        StudioPaths paths = GuiTestSupport.paths(Path.of(args[0]));
+        StudioWindow[] studio = new StudioWindow[1];
+        SwingUtilities.invokeAndWait(() -> {
+            studio[0] = new StudioWindow(paths);
+            studio[0].show(List.of(Path.of(args[1])));
+        });
+        // Alt+4, once the window has settled (the editor holding the focus for half a second).
+        int steady = 0;
+        for (int i = 0; i < 500 && steady < 25; i++) {
+            Thread.sleep(20);
+            boolean focused = KeyboardFocusManager.getCurrentKeyboardFocusManager().getFocusOwner() == studio[0].currentEditor().area();
+            steady = focused ? steady + 1 : 0;
+        }
+        SwingUtilities.invokeAndWait(() -> studio[0].action("showLive").actionPerformed(null));
+        long end = System.nanoTime() + 30_000_000_000L;
+        LiveDock.State[] state = new LiveDock.State[1];
+        do {
+            Thread.sleep(20);
+            SwingUtilities.invokeAndWait(() -> state[0] = studio[0].live().state());
+        } while ((state[0] == LiveDock.State.STARTING || state[0] == LiveDock.State.NOT_STARTED) && System.nanoTime() < end);
+        String text = Files.readString(Path.of(args[1]));
+        SwingUtilities.invokeAndWait(() -> {
+            System.out.println("state: " + state[0]);
+            System.out.println("panel showing: " + studio[0].live().isShowing());
+            System.out.println("message: " + studio[0].live().message());
+            System.out.println("window showing: " + studio[0].frame().isShowing());
+            System.out.println("editor text intact: " + studio[0].currentEditor().area().getText().equals(text));
+            studio[0].onExit(code -> System.exit(code));
+            studio[0].quit();
+        });
+    }
+}
