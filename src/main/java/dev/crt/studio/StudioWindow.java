@@ -292,6 +292,10 @@ final class StudioWindow implements StudioModel.Listener {
         action("saveImage", "Save image as…", ctrlShift(KeyEvent.VK_E), this::saveImage);
         action("sceneSettings", "Settings…", KeyStroke.getKeyStroke(KeyEvent.VK_S, InputEvent.CTRL_DOWN_MASK | InputEvent.ALT_DOWN_MASK),
                 this::sceneSettings);
+        action("renderFrames", "Render frames", KeyStroke.getKeyStroke(KeyEvent.VK_F5, InputEvent.SHIFT_DOWN_MASK), () -> {
+            dock.dockable("animation").toFront();
+            animation.renderFrames();
+        });
         action("renderOnSave", "Render on save", ctrlShift(KeyEvent.VK_F5), () -> {
             settings.renderOnSave = !settings.renderOnSave;
             renderOnSaveItem.setSelected(settings.renderOnSave);
@@ -323,7 +327,7 @@ final class StudioWindow implements StudioModel.Listener {
         add(view, "toggleTheme", null, "showScript", "showRender", "showConsole", "showAnimation", "showSystem", null, "resetLayout");
         bar.add(view);
         JMenu render = menu("Render", KeyEvent.VK_R, "render", "cancel", null, "zoomFit", "zoomActual", null, "saveImage",
-                "sceneSettings");
+                "sceneSettings", "renderFrames");
         // The check box shows the setting; the action behind it toggles it, from the menu or the key.
         renderOnSaveItem.setText("Render on save");
         renderOnSaveItem.setAccelerator((KeyStroke) actions.get("renderOnSave").getValue(Action.ACCELERATOR_KEY));
