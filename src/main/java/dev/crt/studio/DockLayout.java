@@ -44,16 +44,20 @@ final class DockLayout {
 
     DefaultSingleCDockable dockable(String id) { return dockables.get(id); }
 
+    /** The registered panel {@code id}, or null; a panel stacks with another by taking its place. */
+    StudioPanel panel(String id) {
+        for (StudioPanel p : panels) if (p.id().equals(id)) return p;
+        return null;
+    }
+
     /** Puts every panel where its registration says. */
     void resetLayout() {
         CGrid grid = new CGrid(control);
         for (StudioPanel p : panels) grid.add(p.x(), p.y(), p.width(), p.height(), dockables.get(p.id()));
-        // Panels registered at the same place stack as tabs; the first registered is the one in front.
-        java.util.Set<java.util.List<Double>> places = new java.util.HashSet<>();
-        for (StudioPanel p : panels) {
-            if (places.add(java.util.List.of(p.x(), p.y(), p.width(), p.height()))) {
-                grid.select(p.x(), p.y(), p.width(), p.height(), dockables.get(p.id()));
-            }
+        // Panels registered at the same place share a stack; the first registered is in front.
+        for (int i = panels.size() - 1; i >= 0; i--) {
+            StudioPanel p = panels.get(i);
+            grid.select(p.x(), p.y(), p.width(), p.height(), dockables.get(p.id()));
         }
         control.getContentArea().deploy(grid);
         dockables.values().forEach(d -> d.setVisible(true));

@@ -45,7 +45,6 @@ public final class StudioModel {
     };
     private ScriptDocument current;
     private int untitled;
-    private double time;
 
     public List<ScriptDocument> documents() { return List.copyOf(documents); }
 
@@ -103,16 +102,19 @@ public final class StudioModel {
         listeners.forEach(l -> l.selected(d, entity, index));
     }
 
-    /** The scene time t the studio looks at: 0 until the animation panel is scrubbed. */
+    public void addListener(Listener l) { listeners.add(l); }
+
+    public void removeListener(Listener l) { listeners.remove(l); }
+
+    /** The scene time t the studio looks at (the Animation panel's scrub position): 0 until it is scrubbed. */
+    private double time;
+
     public double time() { return time; }
 
+    /** Sets the studio's t and tells the listeners ({@link Listener#timeChanged}) when it changed. */
     public void setTime(double t) {
         if (t == time) return;
         time = t;
         listeners.forEach(l -> l.timeChanged(t));
     }
-
-    public void addListener(Listener l) { listeners.add(l); }
-
-    public void removeListener(Listener l) { listeners.remove(l); }
 }
