@@ -35,7 +35,8 @@ XDG_CONFIG_HOME="$work/anim-config" XDG_STATE_HOME="$work/anim-state" \
   CRT_JAVA_OPTS="-Xss16m -Djava.util.prefs.userRoot=$work/anim-prefs" "$here/crt" studio "$work/orbit.crt" &
 studio=$!
 sleep "${STUDIO_START_WAIT:-12}"
-xdotool mousemove 400 400
+# A click into the editor gives the window the focus (there is no window manager).
+xdotool mousemove 400 400 click 1
 xdotool key alt+8
 sleep 1
 xdotool key alt+7
