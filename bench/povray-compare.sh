@@ -93,7 +93,7 @@ timed() {
 median() { printf '%s\n' "$@" | sort -g | awk '{a[NR]=$1} END {print (NR % 2) ? a[(NR+1)/2] : (a[NR/2] + a[NR/2+1]) / 2}'; }
 
 echo "machine: $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2- | sed 's/^ //'), $cores cores, $(awk '/MemTotal/ {printf "%.0f GiB", $2/1048576}' /proc/meminfo)"
-echo "java:    $(java -version 2>&1 | sed -n 1p)"
+echo "java:    $("$root/crt" --version | sed -n 2p) (the one ./crt runs)"
 echo "povray:  $pov_version"
 echo "scene:   box-field, ${width}x${height}, 1 sample per pixel, recursion depth 5 (POV-Ray max_trace_level 6)"
 echo "load:    $(cut -d' ' -f1-3 /proc/loadavg) (1, 5, 15 min) before the runs"

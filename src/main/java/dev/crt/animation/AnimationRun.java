@@ -124,7 +124,8 @@ public final class AnimationRun {
             long compileNanos = System.nanoTime() - compileStart;
             report(frame, result);
             if (result.hasErrors()) {
-                fail(new Failure(frame.number(), FrameFailure.Kind.SCRIPT, "the script has errors at t = " + frame.number()));
+                fail(new Failure(frame.number(), result.outOfMemory() ? FrameFailure.Kind.MEMORY : FrameFailure.Kind.SCRIPT,
+                        "the script has errors at t = " + frame.number()));
                 return;
             }
             Scene scene = commandLineSettings.apply(result.scene());

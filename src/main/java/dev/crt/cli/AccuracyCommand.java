@@ -107,7 +107,7 @@ final class AccuracyCommand implements Callable<Integer> {
         CompileOptions options = OptionChecks.compileOptions(spec, scriptOptions, timeOption.time);
         Source source = ScriptCompilation.read(sceneFile);
         CompileResult result = ScriptCompilation.compile(source, options, err);
-        if (result.hasErrors()) return ExitCode.SCRIPT_ERROR;
+        if (result.hasErrors()) return ExitCode.ofErrors(result);
         Scene scene = sized(result.scene());
         boolean lens = AccuracyStudy.hasLens(scene);
         try {

@@ -262,6 +262,7 @@ final class AnimateCommand implements Callable<Integer> {
     static int exitCode(FrameFailure.Kind kind) {
         return switch (kind) {
             case SCRIPT -> ExitCode.SCRIPT_ERROR;
+            case MEMORY -> ExitCode.INTERNAL_ERROR;
             case SETTINGS -> ExitCode.USAGE;
             case FILE -> ExitCode.FILE_ERROR;
         };

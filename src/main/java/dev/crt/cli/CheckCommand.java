@@ -54,7 +54,7 @@ final class CheckCommand implements Callable<Integer> {
                 err.println(ShadingAdvice.note(file));
                 err.flush();
             }
-            if (result.hasErrors()) exit = Math.max(exit, ExitCode.SCRIPT_ERROR);
+            if (result.hasErrors()) exit = Math.max(exit, ExitCode.ofErrors(result));
         }
         out.flush();
         return exit;

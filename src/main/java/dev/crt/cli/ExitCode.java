@@ -19,5 +19,10 @@ public final class ExitCode {
     static final String HELP_LINE = "Exit codes: 0 success, 1 the script has errors, 2 bad usage, 3 a file could not be"
             + " read or written, 4 no OpenGL (crt preview), 70 internal error or out of memory, 130 cancelled (Ctrl-C), 143 terminated (SIGTERM).";
 
+    /** The exit code of a compile with errors: 70 when the heap was full, else 1 (the script has errors). */
+    static int ofErrors(dev.crt.lang.CompileResult result) {
+        return result.outOfMemory() ? INTERNAL_ERROR : SCRIPT_ERROR;
+    }
+
     private ExitCode() {}
 }

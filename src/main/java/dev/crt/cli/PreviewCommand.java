@@ -73,7 +73,7 @@ final class PreviewCommand implements Callable<Integer> {
         long start = System.nanoTime();
         Source source = ScriptCompilation.read(sceneFile);
         CompileResult result = ScriptCompilation.compile(source, options, err);
-        if (result.hasErrors()) return ExitCode.SCRIPT_ERROR;
+        if (result.hasErrors()) return ExitCode.ofErrors(result);
         Scene scene = result.scene();
         var s = scene.settings();
         scene = scene.withSettings(s.withSize(width != null ? width : s.width(), height != null ? height : s.height()));

@@ -63,7 +63,7 @@ final class RenderCommand implements Callable<Integer> {
         Source source = ScriptCompilation.read(sceneFile);
         CompileResult result = ScriptCompilation.compile(source, options, err);
         long compileNanos = System.nanoTime() - compileStart;
-        if (result.hasErrors()) return ExitCode.SCRIPT_ERROR;
+        if (result.hasErrors()) return ExitCode.ofErrors(result);
         Scene scene = renderOptions.applyTo(result.scene());
         if (pass != PassOption.Pass.COLOR) return PassFiles.renderPass(scene, pass, target, renderOptions.quiet, err);
 

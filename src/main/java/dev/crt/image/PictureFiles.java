@@ -2,12 +2,16 @@ package dev.crt.image;
 
 import dev.crt.scene.Picture;
 import java.awt.image.BufferedImage;
+import java.awt.image.DataBufferByte;
+import java.awt.image.PixelInterleavedSampleModel;
+import java.awt.image.WritableRaster;
 import java.io.ByteArrayInputStream;
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
+import java.util.Arrays;
 import javax.imageio.ImageIO;
 
 /** Reading pictures that scenes use (panoramas, later textures). */
@@ -55,6 +59,17 @@ public final class PictureFiles {
         int w = image.getWidth(), h = image.getHeight();
         checkSize(w, h, file);
         float[] rgb = new float[w * h * 3];
+        byte[] bgr = plainBgr(image);
+        if (bgr != null) {
+            // What getRGB would give, read straight from the bytes: 0.05 s instead of 0.6-0.8 s
+            // for a 6000 x 3000 JPEG, where getRGB goes through the colour model texel by texel.
+            for (int i = 0; i < rgb.length; i += 3) {
+                rgb[i] = (bgr[i + 2] & 0xFF) / 255f;
+                rgb[i + 1] = (bgr[i + 1] & 0xFF) / 255f;
+                rgb[i + 2] = (bgr[i] & 0xFF) / 255f;
+            }
+            return new Picture(w, h, rgb);
+        }
         int[] row = new int[w];
         for (int y = 0; y < h; y++) {
             image.getRGB(0, y, w, 1, row, 0, w);
@@ -66,6 +81,23 @@ public final class PictureFiles {
             }
         }
         return new Picture(w, h, rgb);
+    }
+
+    /**
+     * The bytes of an sRGB image stored as b, g, r per texel, row after row with no gaps (how
+     * ImageIO decodes colour JPEGs), or null for any other layout.
+     */
+    private static byte[] plainBgr(BufferedImage image) {
+        if (image.getType() != BufferedImage.TYPE_3BYTE_BGR || !image.getColorModel().getColorSpace().isCS_sRGB()) return null;
+        WritableRaster raster = image.getRaster();
+        if (raster.getSampleModelTranslateX() != 0 || raster.getSampleModelTranslateY() != 0) return null;
+        if (!(raster.getDataBuffer() instanceof DataBufferByte buffer) || buffer.getNumBanks() != 1 || buffer.getOffset() != 0) return null;
+        if (!(raster.getSampleModel() instanceof PixelInterleavedSampleModel sm) || sm.getPixelStride() != 3
+                || sm.getScanlineStride() != 3 * image.getWidth() || !Arrays.equals(sm.getBandOffsets(), new int[] {2, 1, 0})) {
+            return null;
+        }
+        byte[] data = buffer.getData();
+        return data.length == 3 * image.getWidth() * image.getHeight() ? data : null;
     }
 
     /** Binary PPM (P6): header "P6 width height maxval", comments with '#', 1 or 2 bytes per sample. */

@@ -59,7 +59,7 @@ public final class CrtCompiler {
             running.set(evaluator);
             try {
                 Scene scene = evaluator.run(parsed.statements(), parsed.assignedNames(), name);
-                return new CompileResult(scene, evaluator.diagnostics());
+                return new CompileResult(scene, evaluator.diagnostics(), evaluator.ranOutOfMemory());
             } catch (ParseClock.OutOfTime out) {
                 // The statements are parsed again as they run; the budget covers that parse too.
                 List<Diagnostic> all = new ArrayList<>(evaluator.diagnostics());
@@ -75,7 +75,8 @@ public final class CrtCompiler {
         } catch (StackOverflowError e) {
             return new CompileResult(null, List.of(error("expression nested too deeply to parse", positions.span(0, 0))));
         } catch (OutOfMemoryError e) {
-            return new CompileResult(null, List.of(error("the script needs more memory than the Java heap has", positions.span(0, 0))));
+            return new CompileResult(null, List.of(error("the script needs more memory than the Java heap has"
+                    + " (give Java more: CRT_JAVA_OPTS=-Xmx2g ./crt …)", positions.span(0, 0))), true);
         } catch (RuntimeException e) {
             // A bug in the compiler: say so plainly rather than throw at the caller.
             return new CompileResult(null, List.of(error("internal error: " + e, positions.span(0, 0))));

@@ -56,6 +56,11 @@ final class CsgSolids {
     private int[] bvhStart = new int[4];
     private Bvh[] bvh = new Bvh[4];
     private double[] scale = new double[4];
+    /**
+     * Per tree: whether it is one operation on two primitives, always tested (no BVH), with a
+     * difference's first operand first; such trees are walked by {@link #walkPair}.
+     */
+    private boolean[] pair = new boolean[4];
 
     /** Per leaf (global index): its shape, its node (tree-local) and whether it is a difference's first operand. */
     private int[] leafShape = new int[8], leafParent = new int[8];
@@ -97,6 +102,7 @@ final class CsgSolids {
             bvhStart = Arrays.copyOf(bvhStart, n);
             bvh = Arrays.copyOf(bvh, n);
             scale = Arrays.copyOf(scale, n);
+            pair = Arrays.copyOf(pair, n);
         }
         leafStart[tree] = leafSize;
         nodeStart[tree] = nodeTotal;
@@ -240,6 +246,10 @@ final class CsgSolids {
             testLeaf = Arrays.copyOf(testLeaf, Math.max(2 * testLeaf.length, testSize + always.size()));
         }
         for (int k : always) testLeaf[testSize++] = k;
+        int g = nodeStart[tree];
+        pair[tree] = n == 2 && always.size() == 2 && bvh[tree] == null && nodeChildren[g] == 2
+                && leafParent[first] == 0 && leafParent[first + 1] == 0
+                && (nodeOp[g] != DIFFERENCE || leafPositive[first] && !leafPositive[first + 1]);
     }
 
     /** Per-thread working memory for walking the events of one tree. */
@@ -433,7 +443,8 @@ final class CsgSolids {
      */
     boolean closestHit(int tree, Ray ray, double tMax, Shapes shapes, Materials materials, LineSpan span, Scratch sc,
             Hit hit) {
-        return walk(tree, ray, tMax, hit, shapes, materials, span, sc) != 0;
+        return (pair[tree] ? walkPair(tree, ray, tMax, hit, shapes, materials, span, sc)
+                : walk(tree, ray, tMax, hit, shapes, materials, span, sc)) != 0;
     }
 
     /**
@@ -441,7 +452,8 @@ final class CsgSolids {
      * 0 as soon as an opaque one is crossed.
      */
     double transmittance(int tree, Ray ray, double tMax, Shapes shapes, Materials materials, LineSpan span, Scratch sc) {
-        return walk(tree, ray, tMax, null, shapes, materials, span, sc);
+        return pair[tree] ? walkPair(tree, ray, tMax, null, shapes, materials, span, sc)
+                : walk(tree, ray, tMax, null, shapes, materials, span, sc);
     }
 
     /**
@@ -452,7 +464,7 @@ final class CsgSolids {
      * the BVH loops, which keeps those loops small and quick to compile, while CSG runs as its own
      * compiled method.
      */
-    private double walk(int tree, Ray ray, double tMax, Hit hit, Shapes shapes, Materials materials, LineSpan span,
+    double walk(int tree, Ray ray, double tMax, Hit hit, Shapes shapes, Materials materials, LineSpan span,
             Scratch sc) {
         double o = Math.max(Math.abs(ray.ox), Math.max(Math.abs(ray.oy), Math.abs(ray.oz)));
         double tol = TIE * (o + scale[tree]);
@@ -498,5 +510,89 @@ final class CsgSolids {
             i = j;
         }
         return hit == null ? product : 0;
+    }
+
+    /**
+     * {@link #walk} for a {@link #pair} tree, with the same events, order, grouping of
+     * simultaneous events and choice of the surface shown, so the answer is the same to the bit;
+     * but the two inside-states are two booleans instead of the node counters, and a difference or
+     * intersection whose first operand the line misses ends before the second is intersected.
+     * When a leaf is not one solid interval (a torus, a mesh, an open tube), the general walk answers.
+     */
+    private double walkPair(int tree, Ray ray, double tMax, Hit hit, Shapes shapes, Materials materials, LineSpan span,
+            Scratch sc) {
+        int first = leafStart[tree];
+        int op = nodeOp[nodeStart[tree]];
+        double none = hit == null ? 1 : 0;
+        boolean in0 = false, in1 = false;
+        int n = 0;
+        if (shapes.span(leafShape[first], ray, span)) {
+            if (span.count != 1 || span.surface) return walk(tree, ray, tMax, hit, shapes, materials, span, sc);
+            if (span.tIn[0] == Double.NEGATIVE_INFINITY) in0 = true;
+            else n = add(sc, n, span.tIn[0], 0, span.faceIn[0], true);
+            if (span.tOut[0] != Double.POSITIVE_INFINITY) n = add(sc, n, span.tOut[0], 0, span.faceOut[0], false);
+        } else if (op != UNION) {
+            return none;
+        }
+        if (shapes.span(leafShape[first + 1], ray, span)) {
+            if (span.count != 1 || span.surface) return walk(tree, ray, tMax, hit, shapes, materials, span, sc);
+            if (span.tIn[0] == Double.NEGATIVE_INFINITY) in1 = true;
+            else n = add(sc, n, span.tIn[0], 1, span.faceIn[0], true);
+            if (span.tOut[0] != Double.POSITIVE_INFINITY) n = add(sc, n, span.tOut[0], 1, span.faceOut[0], false);
+        } else if (op == INTERSECTION) {
+            return none;
+        }
+        if (n == 0) return none;
+        double o = Math.max(Math.abs(ray.ox), Math.max(Math.abs(ray.oy), Math.abs(ray.oz)));
+        double tol = TIE * (o + scale[tree]);
+        double[] eventT = sc.eventT;
+        int[] eventLeaf = sc.eventLeaf;
+        int[] order = sort(eventT, n, sc.order, sc.merge);
+        boolean known = false, state = false;
+        double product = 1;
+        int i = 0;
+        while (i < n) {
+            double t0 = eventT[order[i]];
+            if (t0 >= tMax) break;
+            if (t0 > 0 && !known) {
+                state = inside(op, in0, in1);
+                known = true;
+            }
+            double limit = t0 + tol + TIE * Math.abs(t0);
+            int shown = order[i];
+            int j = i;
+            for (; j < n && eventT[order[j]] <= limit; j++) {
+                int e = order[j];
+                if (eventLeaf[e] == 0) in0 = !in0;
+                else in1 = !in1;
+                if (eventLeaf[e] >= eventLeaf[shown]) shown = e;
+            }
+            if (known) {
+                boolean now = inside(op, in0, in1);
+                if (now != state && eventT[shown] < tMax) {
+                    int shape = leafShape[first + eventLeaf[shown]];
+                    if (hit != null) {
+                        hit.t = eventT[shown];
+                        hit.shape = shape;
+                        hit.face = sc.eventFace[shown];
+                        hit.flip = sc.eventEntry[shown] != now;
+                        return 1;
+                    }
+                    product *= materials.transparency(shapes.material[shape]);
+                    if (product == 0) return 0;
+                }
+                state = now;
+            }
+            i = j;
+        }
+        return hit == null ? product : 0;
+    }
+
+    private static boolean inside(int op, boolean a, boolean b) {
+        return switch (op) {
+            case UNION -> a | b;
+            case INTERSECTION -> a & b;
+            default -> a & !b;
+        };
     }
 }

@@ -28,7 +28,7 @@ final class MeshGeometry {
         normals = data.normals();
         uvs = data.uvs();
         closed = data.closed();
-        int[] source = data.triangles();
+        int[] source = withoutDegenerate(data.triangles(), positions);
         count = source.length / 3;
         double[] flat = new double[6 * count];
         double minX = Double.POSITIVE_INFINITY, minY = minX, minZ = minX;
@@ -68,5 +68,28 @@ final class MeshGeometry {
             bvh = null;
             triangles = source;
         }
+    }
+
+    /**
+     * The triangles without those of no area (a repeated vertex, or three vertices on a line to
+     * within an angle of 2⁻⁴⁰): they bound nothing, and a line through their edge could otherwise
+     * count a crossing there beside the real triangles' one (rounding of the sheared vertices
+     * makes such a triangle thin rather than flat).
+     */
+    static int[] withoutDegenerate(int[] tri, double[] p) {
+        int[] kept = new int[tri.length];
+        int n = 0;
+        for (int k = 0; k < tri.length; k += 3) {
+            int a = 3 * tri[k], b = 3 * tri[k + 1], c = 3 * tri[k + 2];
+            double e1x = p[b] - p[a], e1y = p[b + 1] - p[a + 1], e1z = p[b + 2] - p[a + 2];
+            double e2x = p[c] - p[a], e2y = p[c + 1] - p[a + 1], e2z = p[c + 2] - p[a + 2];
+            double nx = e1y * e2z - e1z * e2y, ny = e1z * e2x - e1x * e2z, nz = e1x * e2y - e1y * e2x;
+            double area2 = nx * nx + ny * ny + nz * nz;
+            double scale2 = (e1x * e1x + e1y * e1y + e1z * e1z) * (e2x * e2x + e2y * e2y + e2z * e2z);
+            if (!(area2 > 0x1p-80 * scale2)) continue;
+            System.arraycopy(tri, k, kept, n, 3);
+            n += 3;
+        }
+        return n == tri.length ? tri : java.util.Arrays.copyOf(kept, n);
     }
 }

@@ -29,6 +29,11 @@ final class MeshShape {
 
     static void add(Shapes out, int s, Mesh m, Transform t) {
         MeshGeometry g = out.mesh(m.data());
+        if (g.count == 0) {
+            // Every triangle had no area: nothing to hit.
+            out.kind[s] = Shapes.EMPTY;
+            return;
+        }
         out.kind[s] = Shapes.MESH;
         out.pushMatrices(t);
         out.push(out.meshIndex(g), m.smooth() ? 1 : 0);

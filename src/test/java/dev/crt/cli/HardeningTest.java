@@ -137,6 +137,22 @@ class HardeningTest {
     }
 
     @Test
+    void aRunawayLoopThatFillsTheHeapIsTheOutOfMemoryExitCodeNotAScriptError() throws Exception {
+        // The loop's entities fill a 40 MiB heap long before the iteration budget would stop it.
+        Path runaway = Files.writeString(dir.resolve("runaway.crt"), "Settings { width -> 8 height -> 8 " + CAMERA + " }\ni = 0\n"
+                + "while (true) { Scene { Sphere { center -> vec3(i, 0, 0) } } i = i + 1 }\n");
+        for (String command : List.of("check", "render")) {
+            Path out = dir.resolve(command + ".png");
+            CliRun run = command.equals("check") ? separateJvm("40m", "check", runaway.toString())
+                    : separateJvm("40m", "render", runaway.toString(), "-q", "-o", out.toString());
+            assertThat(run.exitCode()).as(command).isEqualTo(70);
+            assertThat(run.err()).as(command).contains("runaway.crt:3:1: error: evaluation stopped: the loops' values filled the memory")
+                    .contains("CRT_JAVA_OPTS=-Xmx").doesNotContain("\tat ").doesNotContain("Exception");
+            assertThat(out).doesNotExist();
+        }
+    }
+
+    @Test
     void framePatternWidthsPadWithZeros() {
         assertThat(FramePattern.parse("f%5d.png").path(42)).isEqualTo(Path.of("f00042.png"));
     }

@@ -222,6 +222,6 @@ class ContractTest {
         String out = new String(p.getInputStream().readAllBytes(), java.nio.charset.StandardCharsets.UTF_8);
         assertThat(p.waitFor()).as(out).isZero();
         assertThat(out).startsWith("2:1 evaluation stopped: the loops' values filled the memory after ")
-                .contains("iterations (is the loop condition ever false?)");
+                .contains("iterations (is the loop condition ever false? if not, give Java more memory: CRT_JAVA_OPTS=-Xmx");
     }
 }

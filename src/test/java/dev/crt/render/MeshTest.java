@@ -109,6 +109,34 @@ class MeshTest {
     }
 
     /**
+     * Triangles of no area (a repeated vertex, three vertices on a line) are dropped when the mesh
+     * is prepared: a mesh of only those renders as nothing beside a ball, without NaN or failure,
+     * and one mixed into a grid leaves one crossing through the edge it lies on.
+     */
+    @Test
+    void trianglesOfNoAreaAreDropped() {
+        double[] p = {0, 0, 0, 1, 0, 0, 2, 0, 0, 0, 1, 0};
+        MeshData flat = new MeshData("flat", p, new int[] {0, 1, 2, 0, 0, 3, 3, 3, 3}, null, null, false);
+        assertThat(new MeshGeometry(flat).count).isZero();
+        var settings = settings(camera(v(0, 0, -5), v(0, 0, 0), 40), List.of(point(v(0, 5, -5), dev.crt.scene.Rgb.WHITE, 0, 0.1)),
+                new dev.crt.scene.SolidBackground(rgb(0, 0, 1)), 32, 24);
+        var fb = Renderer.prepare(scene(settings, new Mesh(flat, false, M, Transform.IDENTITY, SourceSpan.NONE),
+                sphere(v(0, 0, 0), 1, M))).render(2, RenderMonitor.NONE);
+        var alone = Renderer.prepare(scene(settings, sphere(v(0, 0, 0), 1, M))).render(2, RenderMonitor.NONE);
+        assertThat(fb.data()).containsExactly(alone.data());
+        MeshData grid = Meshes.grid(2);
+        int[] t = java.util.Arrays.copyOf(grid.triangles(), grid.triangles().length + 3);
+        // Along the shared side x = 1 of the first two cells: (1, 0), (1, 1), (1, 2).
+        t[t.length - 3] = 3;
+        t[t.length - 2] = 4;
+        t[t.length - 1] = 5;
+        Shapes shapes = new Shapes();
+        int s = shapes.add(new Mesh(new MeshData("grid+sliver", grid.positions(), t, null, null, false), false, M,
+                Transform.IDENTITY, SourceSpan.NONE), Transform.IDENTITY, 0);
+        assertThat(crossings(shapes, s, v(1, 0.5, -1), v(0, 0, 1))).isEqualTo(1);
+    }
+
+    /**
      * On a smooth octahedron whose vertex normals point away from its centre, lights are looked at
      * from the point lifted towards the sphere those normals describe: outward from the flat face,
      * by at most the face's distance to that sphere, and not at all at a corner.

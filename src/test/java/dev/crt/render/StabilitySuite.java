@@ -3,6 +3,7 @@ package dev.crt.render;
 import static dev.crt.render.Scenes.*;
 import static org.assertj.core.api.Assertions.assertThat;
 
+import dev.crt.geom.Quartic;
 import dev.crt.geom.Transform;
 import dev.crt.geom.Vec3;
 import dev.crt.image.FrameBuffer;
@@ -10,11 +11,14 @@ import dev.crt.scene.Background;
 import dev.crt.scene.CsgOperation;
 import dev.crt.scene.Entity;
 import dev.crt.scene.Material;
+import dev.crt.scene.Mesh;
+import dev.crt.scene.MeshData;
 import dev.crt.scene.Rgb;
 import dev.crt.scene.Settings;
 import dev.crt.scene.SolidBackground;
 import dev.crt.scene.SourceSpan;
 import dev.crt.scene.Sphere;
+import dev.crt.scene.Torus;
 import java.io.IOException;
 import java.math.BigDecimal;
 import java.math.MathContext;
@@ -281,6 +285,169 @@ class StabilitySuite {
         }
         row("A − B with coincident top faces, scales 1e-4 to 1e4", "a pixel shows the removed face or a hole", trials, crt, "", 0);
         assertThat(crt).isZero();
+    }
+
+    /**
+     * Rays tangent to a torus at a random point of its surface, the line moved 1e-9 to 1e-5 of r
+     * along the normal (three times in four inwards, where the two roots are apart by more than the
+     * tolerance): the first entry against the 60-digit roots of {@link TorusRootsBench}, through
+     * the whole shape path (Shapes.span). A ray fails when it misses a root pair that is farther
+     * apart than the tolerance (1e-7 of R + r), or enters where there is no root. Naive: the closed
+     * form (Ferrari) on the same quartic.
+     */
+    @Test
+    void raysTangentToATorus() {
+        List<TorusRootsBench.Case> cases = TorusRootsBench.cases(1, 3000, new SplittableRandom(99));
+        long crt = 0, naive = 0;
+        Shapes shapes = new Shapes();
+        Ray ray = new Ray();
+        LineSpan span = new LineSpan();
+        double[] roots = new double[8];
+        for (TorusRootsBench.Case c : cases) {
+            double[] ref = TorusRootsBench.reference(c);
+            double tol = 1e-7 * (c.big() + c.small());
+            // A tangent pair closer than the tolerance may be found or not: no picture can show it.
+            boolean mustHit = ref.length >= 2 && ref[1] - ref[0] > tol;
+            int s = shapes.add(new Torus(v(0, 0, 0), v(0, 0, 1), c.big(), c.small(), M, Transform.IDENTITY, SourceSpan.NONE),
+                    Transform.IDENTITY, 0);
+            ray.set(c.ox(), c.oy(), c.oz(), c.dx(), c.dy(), c.dz());
+            boolean hit = shapes.span(s, ray, span);
+            if (torusFailed(hit, hit ? span.tIn[0] : Double.NaN, ref, mustHit, tol)) crt++;
+            int k = TorusRootsBench.solve(Quartic.FERRARI, c, roots);
+            if (torusFailed(k > 0, k > 0 ? roots[0] : Double.NaN, ref, mustHit, tol)) naive++;
+        }
+        row("rays tangent to tori (r from 0.05 to 0.95 R), moved 1e-9 to 1e-5 of r off the surface",
+                "a root pair lost, or an entry where there is no root (60-digit reference)", cases.size(), crt,
+                "closed form (Ferrari)", naive);
+        assertThat(crt).isZero();
+        assertThat(naive).isPositive();
+    }
+
+    private static boolean torusFailed(boolean hit, double first, double[] ref, boolean mustHit, double tol) {
+        if (hit && !Double.isFinite(first)) return true;
+        if (!hit) return mustHit;
+        for (double r : ref) if (Math.abs(r - first) <= tol) return false;
+        return true;
+    }
+
+    /**
+     * An open grid mesh, scaled (1e-3 to 1e3), turned and moved, and rays aimed at its vertices
+     * (where six triangles meet) and at points of its shared edges, from random directions: each
+     * must cross it exactly once, never zero times (a crack) or twice (counted by both neighbours).
+     * With {@code degenerate}, the grid also holds a zero-area sliver along every diagonal (through
+     * an extra vertex at its midpoint) and a triangle with a repeated vertex at every vertex, which
+     * must add no crossing and no NaN. Naive: Möller–Trumbore with ε = 1e-7 over every triangle.
+     */
+    private static long[] meshEdgeTrials(boolean degenerate, long seed) {
+        SplittableRandom r = new SplittableRandom(seed);
+        int n = 6;
+        MeshData grid = Meshes.grid(n);
+        double[] p = grid.positions();
+        int[] t = grid.triangles();
+        if (degenerate) {
+            List<double[]> extra = new ArrayList<>();
+            List<int[]> tris = new ArrayList<>();
+            int next = p.length / 3;
+            for (int k = 0; k < t.length; k += 6) {
+                // The diagonal is the edge the cell's two triangles share.
+                int a = -1, b = -1;
+                for (int x = k; x < k + 3; x++) {
+                    for (int y = k + 3; y < k + 6; y++) {
+                        if (t[x] == t[y]) {
+                            if (a < 0) a = t[x];
+                            else if (t[x] != a) b = t[x];
+                        }
+                    }
+                }
+                extra.add(new double[] {(p[3 * a] + p[3 * b]) / 2, (p[3 * a + 1] + p[3 * b + 1]) / 2, 0});
+                tris.add(new int[] {a, next++, b});
+            }
+            for (int vtx = 0; vtx < p.length / 3; vtx++) tris.add(new int[] {vtx, vtx, (vtx + 1) % (p.length / 3)});
+            double[] p2 = java.util.Arrays.copyOf(p, p.length + 3 * extra.size());
+            for (int i = 0; i < extra.size(); i++) System.arraycopy(extra.get(i), 0, p2, p.length + 3 * i, 3);
+            int[] t2 = java.util.Arrays.copyOf(t, t.length + 3 * tris.size());
+            for (int i = 0; i < tris.size(); i++) System.arraycopy(tris.get(i), 0, t2, t.length + 3 * i, 3);
+            p = p2;
+            t = t2;
+        }
+        MeshData data = new MeshData(degenerate ? "grid with degenerate triangles" : "grid", p, t, null, null, false);
+        long trials = 0, crt = 0, naive = 0;
+        Ray ray = new Ray();
+        LineSpan span = new LineSpan();
+        for (int placement = 0; placement < 40; placement++) {
+            double scale = Math.pow(10, r.nextInt(-3, 4));
+            Transform place = Transform.scaling(v(scale, scale, scale)).then(Transform.rotation(unit(r).times(180)))
+                    .then(Transform.translation(unit(r).times(scale * 100 * r.nextDouble())));
+            Shapes shapes = new Shapes();
+            int s = shapes.add(new Mesh(data, false, M, Transform.IDENTITY, SourceSpan.NONE), place, 0);
+            double[] world = new double[p.length];
+            for (int i = 0; i < p.length; i += 3) {
+                Vec3 w = place.applyToPoint(v(p[i], p[i + 1], p[i + 2]));
+                world[i] = w.x();
+                world[i + 1] = w.y();
+                world[i + 2] = w.z();
+            }
+            Vec3 normal = place.applyToNormal(v(0, 0, 1)).normalize();
+            for (int i = 1; i < n; i++) {
+                for (int j = 1; j < n; j++) {
+                    Vec3[] targets = {v(i, j, 0), v(i + 0.5, j, 0), v(i, j + 0.25, 0), v(i + 0.5, j + 0.5, 0), v(i + 0.25, j + 0.25, 0),
+                        v(i + 0.75, j + 0.25, 0)};
+                    for (Vec3 local : targets) {
+                        Vec3 target = place.applyToPoint(local);
+                        Vec3 d = unit(r);
+                        if (Math.abs(d.dot(normal)) < 0.05) d = d.plus(normal).normalize();
+                        Vec3 o = target.minus(d.times(3 * scale));
+                        trials++;
+                        ray.set(o.x(), o.y(), o.z(), d.x(), d.y(), d.z());
+                        boolean hit = shapes.span(s, ray, span);
+                        int crossings = hit ? span.count : 0;
+                        if (crossings != 1 || !Double.isFinite(span.tIn[0])) crt++;
+                        if (mollerTrumbore(world, t, o, d) != 1) naive++;
+                    }
+                }
+            }
+        }
+        return new long[] {trials, crt, naive};
+    }
+
+    /** Crossings of the line with every triangle by the textbook test, inclusive edges, ε = 1e-7. */
+    private static int mollerTrumbore(double[] p, int[] t, Vec3 o, Vec3 d) {
+        int count = 0;
+        for (int k = 0; k < t.length; k += 3) {
+            Vec3 a = v(p[3 * t[k]], p[3 * t[k] + 1], p[3 * t[k] + 2]);
+            Vec3 e1 = v(p[3 * t[k + 1]], p[3 * t[k + 1] + 1], p[3 * t[k + 1] + 2]).minus(a);
+            Vec3 e2 = v(p[3 * t[k + 2]], p[3 * t[k + 2] + 1], p[3 * t[k + 2] + 2]).minus(a);
+            Vec3 h = d.cross(e2);
+            double det = e1.dot(h);
+            if (Math.abs(det) < 1e-7) continue;
+            double f = 1 / det;
+            Vec3 sv = o.minus(a);
+            double u = f * sv.dot(h);
+            if (u < 0 || u > 1) continue;
+            Vec3 q = sv.cross(e1);
+            double w = f * d.dot(q);
+            if (w < 0 || u + w > 1) continue;
+            if (f * e2.dot(q) > 1e-7) count++;
+        }
+        return count;
+    }
+
+    @Test
+    void raysThroughSharedMeshEdgesAndVertices() {
+        long[] f = meshEdgeTrials(false, 21);
+        row("rays through the shared edges and vertices of a grid mesh, scaled 1e-3 to 1e3, turned and moved",
+                "a crack (no crossing) or a double crossing", f[0], f[1], "Möller–Trumbore, ε = 1e-7", f[2]);
+        assertThat(f[1]).isZero();
+        assertThat(f[2]).isPositive();
+    }
+
+    @Test
+    void degenerateTrianglesAddNoCrossing() {
+        long[] f = meshEdgeTrials(true, 22);
+        row("the same grid with a zero-area sliver along every diagonal and a repeated-vertex triangle at every vertex",
+                "a NaN, a crack or an extra crossing", f[0], f[1], "Möller–Trumbore, ε = 1e-7", f[2]);
+        assertThat(f[1]).isZero();
+        assertThat(f[2]).isPositive();
     }
 
     /** Point lights lying exactly on a plane and on a sphere, and cameras inside solids. */

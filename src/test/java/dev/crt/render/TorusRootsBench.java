@@ -28,7 +28,7 @@ public final class TorusRootsBench {
     private static final String[] FAMILIES = {"random", "grazing (1e-9 to 1e-5 of r)", "along the axis", "far away (1e4 radii)", "spindle"};
 
     /** A ray in the torus's own frame (centre at the origin, axis z) and the torus. */
-    private record Case(double ox, double oy, double oz, double dx, double dy, double dz, double big, double small) {}
+    record Case(double ox, double oy, double oz, double dx, double dy, double dz, double big, double small) {}
 
     public static void main(String[] args) throws IOException {
         int n = args.length > 0 ? Integer.parseInt(args[0]) : 20000;
@@ -76,7 +76,7 @@ public final class TorusRootsBench {
     }
 
     /** The production path: roots in t of the ray as TorusShape.span finds them (both sheets of the quartic). */
-    private static int solve(int method, Case c, double[] out) {
+    static int solve(int method, Case c, double[] out) {
         double length = Math.sqrt(c.dx * c.dx + c.dy * c.dy + c.dz * c.dz);
         double dx = c.dx / length, dy = c.dy / length, dz = c.dz / length;
         double s0 = -(c.ox * dx + c.oy * dy + c.oz * dz);
@@ -110,7 +110,7 @@ public final class TorusRootsBench {
         return best;
     }
 
-    private static List<Case> cases(int family, int n, SplittableRandom r) {
+    static List<Case> cases(int family, int n, SplittableRandom r) {
         List<Case> list = new ArrayList<>(n);
         while (list.size() < n) {
             double big = 1;

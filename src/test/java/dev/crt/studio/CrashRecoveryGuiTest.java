@@ -11,6 +11,7 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
+import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.TimeUnit;
 import java.util.regex.Pattern;
 import java.util.stream.Stream;
@@ -71,6 +72,12 @@ class CrashRecoveryGuiTest {
 
         Robot robot = BasicRobot.robotWithCurrentAwtHierarchy();
         StudioWindow[] studio = new StudioWindow[1];
+        List<Throwable> edtErrors = new CopyOnWriteArrayList<>();
+        Thread.UncaughtExceptionHandler before = Thread.getDefaultUncaughtExceptionHandler();
+        Thread.setDefaultUncaughtExceptionHandler((t, e) -> {
+            edtErrors.add(e);
+            if (before != null) before.uncaughtException(t, e);
+        });
         try {
             SwingUtilities.invokeLater(() -> {
                 try {
@@ -82,18 +89,30 @@ class CrashRecoveryGuiTest {
             });
             JOptionPaneFixture question = JOptionPaneFinder.findOptionPane().withTimeout(15_000).using(robot);
             question.requireMessage(Pattern.compile("(?s).*crash\\.crt.*Recover.*"));
-            // The finder can return the question before its dialog is on the screen; click once it is,
-            // and again if the first click came while the dialog was still being laid out.
+            // The finder can return the question before its dialog is on the screen, and on a slow
+            // machine a click can come while the dialog is still being mapped and be lost: click Yes
+            // whenever the question is still up, until the recovered script is open.
             waitFor("the question on the screen", 30, () -> question.target().isShowing());
-            for (int i = 0; i < 4 && onEdt(() -> question.target().isShowing()); i++) {
-                question.yesButton().click();
-                robot.waitForIdle();
-            }
-            try {
-                waitFor("the recovered script", 30, () -> studio[0] != null && studio[0].model().find(script).isPresent());
-            } catch (AssertionError e) {
-                throw new AssertionError(e.getMessage() + "; open: " + onEdt(() -> studio[0] == null ? null
-                        : studio[0].model().documents().stream().map(ScriptDocument::name).toList()), e);
+            long end = System.nanoTime() + TimeUnit.SECONDS.toNanos(30);
+            int clicks = 0;
+            while (!onEdt(() -> studio[0] != null && studio[0].model().find(script).isPresent())) {
+                boolean asking = onEdt(() -> question.target().isShowing());
+                if (System.nanoTime() > end) {
+                    throw new AssertionError("waited 30 s for the recovered script after " + clicks + " clicks on Yes; question still up: "
+                            + asking + "; exceptions on the Event Dispatch Thread: " + edtErrors + "; open: " + onEdt(() -> studio[0] == null ? null
+                            : studio[0].model().documents().stream().map(ScriptDocument::name).toList()));
+                }
+                if (asking) {
+                    try {
+                        question.yesButton().click();
+                        clicks++;
+                    } catch (RuntimeException e) {
+                        // The dialog closed between the look and the click: the loop looks again.
+                        if (onEdt(() -> question.target().isShowing())) throw e;
+                    }
+                    robot.waitForIdle();
+                }
+                Thread.sleep(200);
             }
             ScriptDocument d = onEdt(() -> studio[0].model().find(script).orElseThrow());
             assertThat(onEdt(d::content)).isEqualTo(original + typed);
@@ -104,6 +123,7 @@ class CrashRecoveryGuiTest {
             assertThat(Files.readString(script)).isEqualTo(original + typed);
             waitFor("the recovery copy deleted", 15, () -> listing(recovery).isEmpty());
         } finally {
+            Thread.setDefaultUncaughtExceptionHandler(before);
             if (studio[0] != null) onEdt(() -> studio[0].quit());
             robot.cleanUp();
         }
@@ -111,7 +131,10 @@ class CrashRecoveryGuiTest {
 
     private static boolean recoveryHolds(Path folder, String text) throws IOException {
         for (Path p : listing(folder)) {
-            if (p.toString().endsWith(".crt") && Files.readString(p, StandardCharsets.UTF_8).equals(text)) return true;
+            // The copy counts once its description (written after the text) is there too.
+            String name = p.getFileName().toString();
+            if (name.endsWith(".crt") && Files.readString(p, StandardCharsets.UTF_8).equals(text)
+                    && Files.isRegularFile(p.resolveSibling(name.substring(0, name.length() - 4) + ".properties"))) return true;
         }
         return false;
     }

@@ -35,7 +35,7 @@ final class Budget {
     /** Said when the loops' values fill the heap before the iteration budget is spent. */
     String outOfMemory() {
         return String.format("evaluation stopped: the loops' values filled the memory after %,d iterations"
-                + " (is the loop condition ever false?)", iterations);
+                + " (is the loop condition ever false? if not, give Java more memory: CRT_JAVA_OPTS=-Xmx2g ./crt …)", iterations);
     }
 
     String tick() {

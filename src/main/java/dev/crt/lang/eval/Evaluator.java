@@ -60,6 +60,7 @@ public final class Evaluator extends CRTBaseVisitor<Value> {
 
     private final TextPositions positions;
     private final Budget budget;
+    private boolean ranOutOfMemory;
     private final Random random = new Random(RANDOM_SEED);
     private final ObjectBuilder objects;
     private final SettingsState settings;
@@ -86,6 +87,9 @@ public final class Evaluator extends CRTBaseVisitor<Value> {
         globals.put("t", time == Math.rint(time) && Math.abs(time) < 1e15 ? NumberValue.ofInt(time) : NumberValue.ofFloat(time));
         globals.put("pi", NumberValue.ofFloat(Math.PI));
     }
+
+    /** Whether the evaluation stopped because the Java heap was full. */
+    public boolean ranOutOfMemory() { return ranOutOfMemory; }
 
     /** Asks a running evaluation to stop soon (another thread may call it). */
     public void cancel() { budget.cancel(); }
@@ -210,6 +214,7 @@ public final class Evaluator extends CRTBaseVisitor<Value> {
             // the budget would. The evaluation ends, so what the loop made can go.
             if (out != null) out.clear();
             placed.clear();
+            ranOutOfMemory = true;
             throw new EvaluationStopped(budget.outOfMemory(), span(loop.WHILE().getSymbol()), callChain());
         } finally {
             loopDepth--;

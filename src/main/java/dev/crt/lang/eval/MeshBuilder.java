@@ -33,7 +33,7 @@ final class MeshBuilder {
 
     int normals() { return normalCount; }
 
-    void position(double x, double y, double z, String where) throws MeshProblem {
+    void position(double x, double y, double z, Object where) throws MeshProblem {
         if (!(Double.isFinite(x) && Double.isFinite(y) && Double.isFinite(z))) {
             throw new MeshProblem(where + "vertex " + positionCount + " is not a finite point (" + x + ", " + y + ", " + z + ")");
         }
@@ -44,7 +44,7 @@ final class MeshBuilder {
         positionCount++;
     }
 
-    void uv(double u, double v, String where) throws MeshProblem {
+    void uv(double u, double v, Object where) throws MeshProblem {
         if (!(Double.isFinite(u) && Double.isFinite(v))) throw new MeshProblem(where + "texture coordinate is not finite");
         uvs = grow(uvs, 2 * uvCount + 2);
         uvs[2 * uvCount] = u;
@@ -52,7 +52,7 @@ final class MeshBuilder {
         uvCount++;
     }
 
-    void normal(double x, double y, double z, String where) throws MeshProblem {
+    void normal(double x, double y, double z, Object where) throws MeshProblem {
         if (!(Double.isFinite(x) && Double.isFinite(y) && Double.isFinite(z))) throw new MeshProblem(where + "normal is not finite");
         normals = grow(normals, 3 * normalCount + 3);
         normals[3 * normalCount] = x;
@@ -64,9 +64,9 @@ final class MeshBuilder {
     /**
      * A polygon of {@code n} corners (position, uv, normal index triples in {@code c}, −1 for an
      * absent uv or normal), fanned from its first corner. Indices are checked against what has been
-     * read so far.
+     * read so far. {@code where} names the place in the file; it becomes text only for a problem.
      */
-    void polygon(int[] c, int n, String where) throws MeshProblem {
+    void polygon(int[] c, int n, Object where) throws MeshProblem {
         if (n < 3) throw new MeshProblem(where + "a face needs at least 3 vertices, got " + n);
         for (int i = 0; i < n; i++) {
             check(c[3 * i], positionCount, "vertex", where);
@@ -75,15 +75,19 @@ final class MeshBuilder {
         }
         for (int i = 1; i + 1 < n; i++) {
             corners = grow(corners, cornerCount + 9);
-            for (int k : new int[] {0, i, i + 1}) {
-                corners[cornerCount++] = c[3 * k];
-                corners[cornerCount++] = c[3 * k + 1];
-                corners[cornerCount++] = c[3 * k + 2];
-            }
+            corner(c, 0);
+            corner(c, i);
+            corner(c, i + 1);
         }
     }
 
-    private static void check(int index, int count, String what, String where) throws MeshProblem {
+    private void corner(int[] c, int k) {
+        corners[cornerCount++] = c[3 * k];
+        corners[cornerCount++] = c[3 * k + 1];
+        corners[cornerCount++] = c[3 * k + 2];
+    }
+
+    private static void check(int index, int count, String what, Object where) throws MeshProblem {
         if (index < 0 || index >= count) {
             String plural = what.equals("vertex") ? "vertices" : what + "s";
             throw new MeshProblem(where + what + " " + index + " does not exist (there " + (count == 1 ? "is 1 " + what

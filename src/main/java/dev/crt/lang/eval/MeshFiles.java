@@ -51,9 +51,9 @@ final class MeshFiles {
             String line;
             int number = 0;
             int[] corners = new int[48];
+            Place where = new Place("line");
             while ((line = in.readLine()) != null) {
-                number++;
-                String where = "line " + number + ": ";
+                where.index = ++number;
                 String[] w = line.trim().split("\\s+");
                 if (w.length == 0 || w[0].isEmpty() || w[0].startsWith("#")) continue;
                 switch (w[0]) {
@@ -78,7 +78,7 @@ final class MeshFiles {
     }
 
     /** An OBJ index: 1-based, or negative counting back from the last one read; returned 0-based. */
-    private static int index(String text, int count, String where) throws MeshProblem {
+    private static int index(String text, int count, Object where) throws MeshProblem {
         int i;
         try {
             i = Integer.parseInt(text);
@@ -89,12 +89,12 @@ final class MeshFiles {
         return i > 0 ? i - 1 : count + i;
     }
 
-    private static double num(String[] w, int i, String where) throws MeshProblem {
+    private static double num(String[] w, int i, Object where) throws MeshProblem {
         if (i >= w.length) throw new MeshProblem(where + "too few numbers after '" + w[0] + "'");
         return parse(w[i], where);
     }
 
-    private static double parse(String text, String where) throws MeshProblem {
+    private static double parse(String text, Object where) throws MeshProblem {
         try {
             return Double.parseDouble(text);
         } catch (NumberFormatException e) {
@@ -108,9 +108,9 @@ final class MeshFiles {
         try (BufferedReader in = Files.newBufferedReader(file, StandardCharsets.ISO_8859_1)) {
             String line;
             int number = 0;
+            Place where = new Place("line");
             while ((line = in.readLine()) != null) {
-                number++;
-                String where = "line " + number + ": ";
+                where.index = ++number;
                 for (String w : line.trim().split("\\s+")) {
                     if (w.isEmpty()) continue;
                     values.add(parse(w, where));
@@ -201,16 +201,22 @@ final class MeshFiles {
             }
             if (face && list < 0) throw new MeshProblem("the PLY face element has no vertex_indices list");
             double[] values = new double[e.properties().size()];
+            int[] types = new int[values.length], countTypes = new int[values.length];
+            for (int k = 0; k < values.length; k++) {
+                Property p = e.properties().get(k);
+                types[k] = code(p.type());
+                countTypes[k] = p.countType() == null ? -1 : code(p.countType());
+            }
+            Place where = new Place(e.name());
             for (long i = 0; i < e.count(); i++) {
-                String where = e.name() + " " + i + ": ";
+                where.index = i;
                 try {
                     for (int k = 0; k < values.length; k++) {
-                        Property p = e.properties().get(k);
-                        if (p.countType() == null) {
-                            values[k] = in.next(p.type(), where);
+                        if (countTypes[k] < 0) {
+                            values[k] = in.next(types[k], where);
                             continue;
                         }
-                        double count = in.next(p.countType(), where);
+                        double count = in.next(countTypes[k], where);
                         if (!(count >= 0 && count <= 1 << 16) || count != Math.rint(count)) {
                             throw new MeshProblem(where + "a list length of " + count);
                         }
@@ -218,7 +224,7 @@ final class MeshFiles {
                         if (k == list && face) {
                             if (3 * n > corners.length) corners = new int[3 * n];
                             for (int c = 0; c < n; c++) {
-                                double index = in.next(p.type(), where);
+                                double index = in.next(types[k], where);
                                 if (index != Math.rint(index) || Math.abs(index) > Integer.MAX_VALUE) {
                                     throw new MeshProblem(where + "vertex index " + index + " is not a whole number");
                                 }
@@ -227,12 +233,12 @@ final class MeshFiles {
                                 corners[3 * c + 2] = -1;
                             }
                         } else {
-                            for (int c = 0; c < n; c++) in.next(p.type(), where);
+                            for (int c = 0; c < n; c++) in.next(types[k], where);
                         }
                         if (k == list && face) values[k] = n;
                     }
                 } catch (BufferUnderflowException | IndexOutOfBoundsException end) {
-                    throw new MeshProblem("the file ends at " + where.substring(0, where.length() - 2) + " of " + e.count()
+                    throw new MeshProblem("the file ends at " + e.name() + " " + i + " of " + e.count()
                             + " " + e.name() + " elements (truncated?)");
                 }
                 if (vertex) {
@@ -270,8 +276,35 @@ final class MeshFiles {
         };
     }
 
+    private static final int INT8 = 0, UINT8 = 1, INT16 = 2, UINT16 = 3, INT32 = 4, UINT32 = 5, FLOAT32 = 6, FLOAT64 = 7;
+
+    /** A PLY type name as one of the codes above, decided once per property rather than per value. */
+    private static int code(String type) {
+        return switch (type) {
+            case "char", "int8" -> INT8;
+            case "uchar", "uint8" -> UINT8;
+            case "short", "int16" -> INT16;
+            case "ushort", "uint16" -> UINT16;
+            case "int", "int32" -> INT32;
+            case "uint", "uint32" -> UINT32;
+            case "float", "float32" -> FLOAT32;
+            default -> FLOAT64;
+        };
+    }
+
+    /** "vertex 12: " or "line 7: ", made into text only when a problem is reported, not for every element read. */
+    private static final class Place {
+        final String what;
+        long index;
+
+        Place(String what) { this.what = what; }
+
+        @Override
+        public String toString() { return what + " " + index + ": "; }
+    }
+
     private interface Reader {
-        double next(String type, String where) throws MeshProblem;
+        double next(int type, Object where) throws MeshProblem;
     }
 
     private static final class BinaryReader implements Reader {
@@ -282,15 +315,15 @@ final class MeshFiles {
         }
 
         @Override
-        public double next(String type, String where) {
+        public double next(int type, Object where) {
             return switch (type) {
-                case "char", "int8" -> buffer.get();
-                case "uchar", "uint8" -> buffer.get() & 0xff;
-                case "short", "int16" -> buffer.getShort();
-                case "ushort", "uint16" -> buffer.getShort() & 0xffff;
-                case "int", "int32" -> buffer.getInt();
-                case "uint", "uint32" -> buffer.getInt() & 0xffffffffL;
-                case "float", "float32" -> buffer.getFloat();
+                case INT8 -> buffer.get();
+                case UINT8 -> buffer.get() & 0xff;
+                case INT16 -> buffer.getShort();
+                case UINT16 -> buffer.getShort() & 0xffff;
+                case INT32 -> buffer.getInt();
+                case UINT32 -> buffer.getInt() & 0xffffffffL;
+                case FLOAT32 -> buffer.getFloat();
                 default -> buffer.getDouble();
             };
         }
@@ -306,7 +339,7 @@ final class MeshFiles {
         }
 
         @Override
-        public double next(String type, String where) throws MeshProblem {
+        public double next(int type, Object where) throws MeshProblem {
             while (pos < bytes.length && Character.isWhitespace(bytes[pos])) pos++;
             if (pos >= bytes.length) throw new BufferUnderflowException();
             int start = pos;
