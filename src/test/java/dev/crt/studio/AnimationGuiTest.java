@@ -239,6 +239,18 @@ class AnimationGuiTest {
         return dialog;
     }
 
+    /**
+     * Types {@code text} into a spinner and commits it; on a loaded machine a key can be lost while
+     * the focus settles, so the entry is typed again (at most twice more) until the spinner holds it.
+     */
+    private void enter(DialogFixture dialog, String spinner, String text, Object value) {
+        for (int attempt = 0; attempt < 3; attempt++) {
+            dialog.spinner(spinner).enterTextAndCommit(text);
+            if (value.equals(onEdt(() -> dialog.spinner(spinner).target().getValue()))) return;
+        }
+        dialog.spinner(spinner).requireValue(value);
+    }
+
     @Test
     void theSettingsDialogWritesTheSettingsBlockAsOneEditThatCtrlZTakesBack() throws Exception {
         Path file = scene("two-spheres.crt");
@@ -246,14 +258,20 @@ class AnimationGuiTest {
         open(file);
         DialogFixture dialog = openSettings();
         dialog.spinner("settingsWidth").requireValue(160);
-        dialog.spinner("settingsWidth").enterTextAndCommit("200");
-        dialog.spinner("settingsGamma").enterTextAndCommit("2.2");
+        enter(dialog, "settingsWidth", "200", 200);
+        enter(dialog, "settingsGamma", "2.2", 2.2);
         dialog.radioButton("settingsToScript").check();
+        waitFor("the dialog to hold the focus", 10, () -> dialog.target().isFocused());
         dialog.button("settingsOk").click();
+        waitFor("the dialog to close", 10, () -> !dialog.target().isVisible());
         String expected = original.replace("width -> 160", "width -> 200").replace(
                 "background -> Background { color -> rgb(0.1, 0.1, 0.2) }",
                 "background -> Background { color -> rgb(0.1, 0.1, 0.2) }\n  gamma -> 2.2");
-        waitFor("the new settings in the text", 5, () -> studio.model().current().content().equals(expected));
+        try {
+            waitFor("the new settings in the text", 5, () -> studio.model().current().content().equals(expected));
+        } catch (AssertionError e) {
+            throw new AssertionError(e.getMessage() + "; the text: " + onEdt(() -> studio.model().current().content()));
+        }
         ScriptDocument d = onEdt(() -> studio.model().current());
         waitFor("the new text to compile", 10, () -> d.resultIsCurrent() && d.result().scene() != null
                 && d.result().scene().settings().width() == 200 && d.result().scene().settings().gamma() == 2.2);
@@ -271,8 +289,8 @@ class AnimationGuiTest {
         Files.writeString(file, "w = 80\n" + text);
         open(file);
         DialogFixture dialog = openSettings();
-        dialog.spinner("settingsWidth").enterTextAndCommit("64");
-        dialog.spinner("settingsHeight").enterTextAndCommit("48");
+        enter(dialog, "settingsWidth", "64", 64);
+        enter(dialog, "settingsHeight", "48", 48);
         dialog.radioButton("settingsToScript").check();
         dialog.button("settingsOk").click();
         JOptionPaneFixture refusal = dialog.optionPane();
