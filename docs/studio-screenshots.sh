@@ -28,6 +28,30 @@ cleanup() {
 trap cleanup EXIT
 export DISPLAY=":$display"
 sleep 1
+shot() { sleep "$2"; import -window root "$out/$1.png"; echo "wrote docs/images/studio/$1.png"; }
+
+# The Animation, System and settings panels, in a studio of their own on a copy of orbit.crt (light theme).
+cp "$here/scenes/orbit.crt" "$work/orbit.crt"
+XDG_CONFIG_HOME="$work/anim-config" XDG_STATE_HOME="$work/anim-state" \
+  CRT_JAVA_OPTS="-Xss16m -Djava.util.prefs.userRoot=$work/anim-prefs" "$here/crt" studio "$work/orbit.crt" &
+studio=$!
+sleep "${STUDIO_START_WAIT:-12}"
+# A click into the editor gives the window the focus (there is no window manager).
+xdotool mousemove 400 400 click 1
+xdotool key alt+8
+sleep 1
+xdotool key alt+7
+shot animation-preview 3
+# Shift+F5 renders the frames 0..47 in the Animation panel.
+xdotool key shift+F5
+shot animation "${FRAMES_WAIT:-40}"
+shot system 2
+xdotool key ctrl+alt+s
+shot settings-dialog 3
+xdotool key Escape
+kill "$studio" 2>/dev/null || true
+wait "$studio" 2>/dev/null || true
+studio=""
 
 # The script is a copy, so that the edits below never touch the example.
 cp "$here/scenes/dice.crt" "$work/dice.crt"
@@ -36,7 +60,6 @@ XDG_CONFIG_HOME="$work/config" XDG_STATE_HOME="$work/state" \
 studio=$!
 sleep "${STUDIO_START_WAIT:-12}"
 xdotool mousemove 400 400
-shot() { sleep "$2"; import -window root "$out/$1.png"; echo "wrote docs/images/studio/$1.png"; }
 
 xdotool key F5
 shot light-render "${RENDER_WAIT:-15}"

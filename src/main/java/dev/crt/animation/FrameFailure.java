@@ -2,8 +2,8 @@ package dev.crt.animation;
 
 /** A frame that cannot be made, said in one plain sentence, and whose fault it is. */
 public final class FrameFailure extends Exception {
-    /** Whose fault: the script, the settings asked of the render, the file system, or a full Java heap. */
-    public enum Kind { SCRIPT, SETTINGS, FILE, MEMORY }
+    /** Whose fault: the script, the heap filled while compiling it, the settings asked of the render, or the file system. */
+    public enum Kind { SCRIPT, MEMORY, SETTINGS, FILE }
 
     private final Kind kind;
 

@@ -262,9 +262,9 @@ final class AnimateCommand implements Callable<Integer> {
     static int exitCode(FrameFailure.Kind kind) {
         return switch (kind) {
             case SCRIPT -> ExitCode.SCRIPT_ERROR;
+            case MEMORY -> ExitCode.INTERNAL_ERROR;
             case SETTINGS -> ExitCode.USAGE;
             case FILE -> ExitCode.FILE_ERROR;
-            case MEMORY -> ExitCode.INTERNAL_ERROR;
         };
     }
 

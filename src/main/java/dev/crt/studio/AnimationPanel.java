@@ -65,7 +65,7 @@ final class AnimationPanel extends JPanel implements StudioModel.Listener {
     private final JButton renderButton = new JButton("Render frames");
     private final JButton cancelButton = new JButton("Cancel");
     private final JProgressBar progress = new JProgressBar(0, 1000);
-    private final JLabel status = new JLabel("Render frames renders the range of the current script");
+    private final JLabel status = new JLabel("Render frames (Shift+F5) renders the range");
     private final JSlider slider = new JSlider(0, 47, 0);
     private final JLabel timeLabel = new JLabel("t = 0");
     private final JToggleButton playButton = new JToggleButton("Play");

@@ -85,6 +85,12 @@ final class DockLayout {
 
     DefaultSingleCDockable dockable(String id) { return dockables.get(id); }
 
+    /** The registered panel {@code id}, or null; a panel stacks with another by taking its place. */
+    StudioPanel panel(String id) {
+        for (StudioPanel p : panels) if (p.id().equals(id)) return p;
+        return null;
+    }
+
     /** Puts every panel where its registration says. */
     void resetLayout() {
         CGrid grid = new CGrid(control);

@@ -48,10 +48,12 @@ final class FrameView extends JPanel {
         int x = (getWidth() - w) / 2, y = (getHeight() - h) / 2;
         g2.drawImage(p, x, y, w, h, null);
         if (preview) {
+            String label = "preview (low resolution)";
+            java.awt.FontMetrics fm = g2.getFontMetrics();
             g2.setColor(new Color(0, 0, 0, 150));
-            g2.fillRect(x, y, 150, 20);
+            g2.fillRect(x, y, fm.stringWidth(label) + 12, fm.getHeight() + 6);
             g2.setColor(Color.WHITE);
-            g2.drawString("preview (low resolution)", x + 6, y + 14);
+            g2.drawString(label, x + 6, y + 3 + fm.getAscent());
         }
         g2.dispose();
     }

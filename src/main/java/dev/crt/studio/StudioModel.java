@@ -45,7 +45,6 @@ public final class StudioModel {
     };
     private ScriptDocument current;
     private int untitled;
-    private double time;
     private ScriptDocument selectedDocument;
     private Entity selectedEntity;
     private int selectedIndex = -1;
@@ -115,9 +114,16 @@ public final class StudioModel {
         listeners.forEach(l -> l.selected(d, entity, selectedIndex));
     }
 
-    /** The scene time t the studio looks at: 0 until the animation panel is scrubbed. */
+    public void addListener(Listener l) { listeners.add(l); }
+
+    public void removeListener(Listener l) { listeners.remove(l); }
+
+    /** The scene time t the studio looks at (the Animation panel's scrub position): 0 until it is scrubbed. */
+    private double time;
+
     public double time() { return time; }
 
+    /** Sets the studio's t and tells the listeners ({@link Listener#timeChanged}) when it changed. */
     public void setTime(double t) {
         if (t == time) return;
         time = t;
@@ -141,7 +147,4 @@ public final class StudioModel {
     /** The selected entity's index in its scene's entities(), or −1. */
     public int selectedIndex() { return selectedIndex; }
 
-    public void addListener(Listener l) { listeners.add(l); }
-
-    public void removeListener(Listener l) { listeners.remove(l); }
 }

@@ -79,16 +79,17 @@ final class StudioWindow implements StudioModel.Listener {
     private final RenderView renderView = new RenderView();
     private final JLabel renderInfo = new JLabel("F5 renders the current script");
     private final ConsolePanel console = new ConsolePanel();
-    private final SessionSettings session = new SessionSettings();
-    private final Throughput throughput = new Throughput();
-    private final AnimationPanel animation = new AnimationPanel(model, session, throughput, console);
-    private final SystemPanel system = new SystemPanel(throughput);
     private final LiveDock live = new LiveDock(model, editors::get, console);
     private final RenderSelection renderSelection = new RenderSelection(renderView);
     private final JLabel caretStatus = new JLabel("–");
     private final JLabel renderStatus = new JLabel(" ");
     private final JProgressBar progress = new JProgressBar(0, 1000);
     private final JLabel heapStatus = new JLabel();
+    /** Render → Settings… for this session only, which renders and animations apply. */
+    private final SessionSettings session = new SessionSettings();
+    private final Throughput throughput = new Throughput();
+    private final AnimationPanel animation = new AnimationPanel(model, session, throughput, console);
+    private final SystemPanel system = new SystemPanel(throughput);
     private final Map<String, Action> actions = new LinkedHashMap<>();
     private final JMenu recentMenu = new JMenu("Open recent");
     {
@@ -177,10 +178,6 @@ final class StudioWindow implements StudioModel.Listener {
 
     RenderView renderView() { return renderView; }
 
-    AnimationPanel animation() { return animation; }
-
-    SystemPanel system() { return system; }
-
     LiveDock live() { return live; }
 
     DockLayout dock() { return dock; }
@@ -194,6 +191,10 @@ final class StudioWindow implements StudioModel.Listener {
     ScriptEditor currentEditor() { return model.current() == null ? null : editors.get(model.current()); }
 
     LiveCompiler compiler() { return compiler; }
+
+    AnimationPanel animation() { return animation; }
+
+    SystemPanel system() { return system; }
 
     Recovery recovery() { return recovery; }
 
@@ -245,10 +246,12 @@ final class StudioWindow implements StudioModel.Listener {
         objects = new ObjectPanels(this);
         objects.panels().forEach(dock::register);
         dock.register(new StudioPanel("console", "Console", console, 0, 0.75, 1, 0.25));
-        // Stacked behind the render view: frames are pictures too, and want its room.
-        dock.register(new StudioPanel("animation", "Animation", animation, 0.62, 0, 0.38, 0.75));
+
+        // Animation stacks behind the render view (frames are pictures too, and want its room), System behind the console.
+        StudioPanel render = dock.panel("render"), bottom = dock.panel("console");
+        dock.register(new StudioPanel("animation", "Animation", animation, render.x(), render.y(), render.width(), render.height()));
+        dock.register(new StudioPanel("system", "System", system, bottom.x(), bottom.y(), bottom.width(), bottom.height()));
         model.addListener(animation);
-        dock.register(new StudioPanel("system", "System", system, 0, 0.75, 1, 0.25));
     }
 
     private JButton button(String action) {
@@ -298,10 +301,6 @@ final class StudioWindow implements StudioModel.Listener {
                 () -> dock.dockable("render").toFront());
         action("showConsole", "Console", KeyStroke.getKeyStroke(KeyEvent.VK_3, InputEvent.ALT_DOWN_MASK),
                 () -> dock.dockable("console").toFront());
-        action("showAnimation", "Animation", KeyStroke.getKeyStroke(KeyEvent.VK_7, InputEvent.ALT_DOWN_MASK),
-                () -> dock.dockable("animation").toFront());
-        action("showSystem", "System", KeyStroke.getKeyStroke(KeyEvent.VK_8, InputEvent.ALT_DOWN_MASK),
-                () -> dock.dockable("system").toFront());
         action("showLive", "Live view", KeyStroke.getKeyStroke(KeyEvent.VK_4, InputEvent.ALT_DOWN_MASK),
                 () -> dock.dockable("live").toFront());
         action("copyCamera", "Copy camera to script", ctrlShift(KeyEvent.VK_C), live::copyCameraToScript);
@@ -310,8 +309,6 @@ final class StudioWindow implements StudioModel.Listener {
         action("zoomFit", "Fit", ctrl(KeyEvent.VK_0), renderView::zoomToFit);
         action("zoomActual", "1:1", ctrl(KeyEvent.VK_1), renderView::zoomActualSize);
         action("saveImage", "Save image as…", ctrlShift(KeyEvent.VK_E), this::saveImage);
-        action("sceneSettings", "Settings…", KeyStroke.getKeyStroke(KeyEvent.VK_S, InputEvent.CTRL_DOWN_MASK | InputEvent.ALT_DOWN_MASK),
-                this::sceneSettings);
         action("renderOnSave", "Render on save", ctrlShift(KeyEvent.VK_F5), () -> {
             settings.renderOnSave = !settings.renderOnSave;
             renderOnSaveItem.setSelected(settings.renderOnSave);
@@ -322,6 +319,16 @@ final class StudioWindow implements StudioModel.Listener {
         action("about", "About CRT Studio", KeyStroke.getKeyStroke(KeyEvent.VK_F1, InputEvent.SHIFT_DOWN_MASK), () -> JOptionPane.showMessageDialog(frame,
                 "CRT Studio: write .crt scene scripts and render them with the Cathode Ray Tracer.\nJava "
                         + System.getProperty("java.version"), "About", JOptionPane.INFORMATION_MESSAGE));
+        action("showAnimation", "Animation", KeyStroke.getKeyStroke(KeyEvent.VK_7, InputEvent.ALT_DOWN_MASK),
+                () -> dock.dockable("animation").toFront());
+        action("showSystem", "System", KeyStroke.getKeyStroke(KeyEvent.VK_8, InputEvent.ALT_DOWN_MASK),
+                () -> dock.dockable("system").toFront());
+        action("sceneSettings", "Settings…", KeyStroke.getKeyStroke(KeyEvent.VK_S, InputEvent.CTRL_DOWN_MASK | InputEvent.ALT_DOWN_MASK),
+                this::sceneSettings);
+        action("renderFrames", "Render frames", KeyStroke.getKeyStroke(KeyEvent.VK_F5, InputEvent.SHIFT_DOWN_MASK), () -> {
+            dock.dockable("animation").toFront();
+            animation.renderFrames();
+        });
     }
 
     private JMenuBar buildMenus() {
@@ -340,11 +347,11 @@ final class StudioWindow implements StudioModel.Listener {
             themes.add(item);
             view.add(item);
         }
-        add(view, "toggleTheme", null, "showScript", "showRender", "showConsole", "showLive", "showAnimation", "showSystem", null,
-                "copyCamera", null, "resetLayout");
+        add(view, "toggleTheme", null, "showScript", "showRender", "showConsole", "showLive", null, "copyCamera", null, "resetLayout");
         bar.add(view);
+        add(view, null, "showAnimation", "showSystem");
         JMenu render = menu("Render", KeyEvent.VK_R, "render", "cancel", null, "zoomFit", "zoomActual", null, "saveImage",
-                "sceneSettings");
+                "sceneSettings", "renderFrames");
         // The check box shows the setting; the action behind it toggles it, from the menu or the key.
         renderOnSaveItem.setText("Render on save");
         renderOnSaveItem.setAccelerator((KeyStroke) actions.get("renderOnSave").getValue(Action.ACCELERATOR_KEY));

@@ -122,7 +122,7 @@ class AnimationGuiTest {
     void rendersFramesZeroToFiveScrubsPlaysAndExportsASixFrameGif() throws Exception {
         Path file = scene("moving-sphere.crt");
         AnimationPanel panel = openAnimation(file);
-        window.spinner("animLast").enterTextAndCommit("5");
+        enter(window.spinner("animLast"), "5", 5);
         waitFor("the slider to span frames 0..5", 5, () -> window.slider("animSlider").target().getMaximum() == 5);
 
         // A position not rendered yet shows a coarse preview at once, and tells the studio its t.
@@ -178,7 +178,7 @@ class AnimationGuiTest {
     @Test
     void cancelStopsTheFramesAndKeepsOnlyWholeOnes() throws Exception {
         AnimationPanel panel = openAnimation(scene("slow-sphere.crt"));
-        window.spinner("animLast").enterTextAndCommit("2000");
+        enter(window.spinner("animLast"), "2000", 2000);
         window.button("animRender").click();
         waitFor("two frames to be rendered", 20, () -> panel.renderedFrames().size() >= 2);
         window.button("animCancel").click();
@@ -219,7 +219,7 @@ class AnimationGuiTest {
         assertThat(onEdt(() -> system.latest(SystemPanel.MEMORY_SYSTEM))).isPositive();
         assertThat(onEdt(() -> system.highest(SystemPanel.THROUGHPUT))).isZero();
         // Frames rendered in the Animation panel (still showing: it is in another stack) count as throughput.
-        window.spinner("animLast").enterTextAndCommit("3");
+        enter(window.spinner("animLast"), "3", 3);
         window.button("animRender").click();
         waitFor("frames 0..3", 30, () -> !animation.isRendering() && animation.renderedFrames().size() == 4);
         waitFor("the rays of the frames on the throughput chart", 10, () -> system.highest(SystemPanel.THROUGHPUT) > 0);
@@ -239,6 +239,33 @@ class AnimationGuiTest {
         return dialog;
     }
 
+    /**
+     * Types {@code text} into a spinner and commits it; on a loaded machine a key can be lost while
+     * the focus settles, so the entry is typed again (at most twice more) until the spinner holds it.
+     */
+    private void enter(DialogFixture dialog, String spinner, String text, Object value) {
+        enter(dialog.spinner(spinner), text, value);
+    }
+
+    private static void enter(org.assertj.swing.fixture.JSpinnerFixture spinner, String text, Object value) {
+        for (int attempt = 0; attempt < 3; attempt++) {
+            spinner.enterTextAndCommit(text);
+            if (value.equals(onEdt(() -> spinner.target().getValue()))) return;
+        }
+        spinner.requireValue(value);
+    }
+
+    /** Clicks OK; a click lost while the dialog's focus settled (the dialog still up after 10 s) is made once more. */
+    private static void clickOk(DialogFixture dialog) {
+        dialog.button("settingsOk").click();
+        try {
+            waitFor("the dialog to close", 10, () -> !dialog.target().isVisible());
+        } catch (AssertionError lost) {
+            dialog.button("settingsOk").click();
+            waitFor("the dialog to close", 10, () -> !dialog.target().isVisible());
+        }
+    }
+
     @Test
     void theSettingsDialogWritesTheSettingsBlockAsOneEditThatCtrlZTakesBack() throws Exception {
         Path file = scene("two-spheres.crt");
@@ -246,14 +273,19 @@ class AnimationGuiTest {
         open(file);
         DialogFixture dialog = openSettings();
         dialog.spinner("settingsWidth").requireValue(160);
-        dialog.spinner("settingsWidth").enterTextAndCommit("200");
-        dialog.spinner("settingsGamma").enterTextAndCommit("2.2");
+        enter(dialog, "settingsWidth", "200", 200);
+        enter(dialog, "settingsGamma", "2.2", 2.2);
         dialog.radioButton("settingsToScript").check();
-        dialog.button("settingsOk").click();
+        waitFor("the dialog to hold the focus", 10, () -> dialog.target().isFocused());
+        clickOk(dialog);
         String expected = original.replace("width -> 160", "width -> 200").replace(
                 "background -> Background { color -> rgb(0.1, 0.1, 0.2) }",
                 "background -> Background { color -> rgb(0.1, 0.1, 0.2) }\n  gamma -> 2.2");
-        waitFor("the new settings in the text", 5, () -> studio.model().current().content().equals(expected));
+        try {
+            waitFor("the new settings in the text", 5, () -> studio.model().current().content().equals(expected));
+        } catch (AssertionError e) {
+            throw new AssertionError(e.getMessage() + "; the text: " + onEdt(() -> studio.model().current().content()));
+        }
         ScriptDocument d = onEdt(() -> studio.model().current());
         waitFor("the new text to compile", 10, () -> d.resultIsCurrent() && d.result().scene() != null
                 && d.result().scene().settings().width() == 200 && d.result().scene().settings().gamma() == 2.2);
@@ -271,8 +303,8 @@ class AnimationGuiTest {
         Files.writeString(file, "w = 80\n" + text);
         open(file);
         DialogFixture dialog = openSettings();
-        dialog.spinner("settingsWidth").enterTextAndCommit("64");
-        dialog.spinner("settingsHeight").enterTextAndCommit("48");
+        enter(dialog, "settingsWidth", "64", 64);
+        enter(dialog, "settingsHeight", "48", 48);
         dialog.radioButton("settingsToScript").check();
         dialog.button("settingsOk").click();
         JOptionPaneFixture refusal = dialog.optionPane();
@@ -284,8 +316,7 @@ class AnimationGuiTest {
 
         dialog.radioButton("settingsToSession").check();
         waitFor("the dialog to hold the focus again", 10, () -> dialog.target().isFocused());
-        dialog.button("settingsOk").click();
-        waitFor("the dialog to close", 10, () -> !dialog.target().isVisible());
+        clickOk(dialog);
         new org.assertj.swing.fixture.JTextComponentFixture(robot, onEdt(() -> studio.currentEditor().area())).click();
         waitFor("the editor to have the focus", 10, () -> studio.currentEditor().area().isFocusOwner());
         keys.press(KeyEvent.VK_F5);
