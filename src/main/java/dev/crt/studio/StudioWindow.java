@@ -265,7 +265,15 @@ final class StudioWindow implements StudioModel.Listener {
         AbstractAction a = new AbstractAction(label) {
             @Override public void actionPerformed(ActionEvent e) { body.run(); }
         };
-        if (key != null) a.putValue(Action.ACCELERATOR_KEY, key);
+        if (key != null) {
+            // One key, one action: a second binding would silently take the first one's key away.
+            for (Action other : actions.values()) {
+                if (key.equals(other.getValue(Action.ACCELERATOR_KEY))) {
+                    throw new IllegalStateException(key + " is already the key of " + other.getValue(Action.ACTION_COMMAND_KEY));
+                }
+            }
+            a.putValue(Action.ACCELERATOR_KEY, key);
+        }
         a.putValue(Action.ACTION_COMMAND_KEY, name);
         actions.put(name, a);
     }
@@ -313,7 +321,7 @@ final class StudioWindow implements StudioModel.Listener {
             settings.renderOnSave = !settings.renderOnSave;
             renderOnSaveItem.setSelected(settings.renderOnSave);
         });
-        action("originalShading", "Look of CRT 2015 (shading original)", ctrlShift(KeyEvent.VK_L),
+        action("originalShading", "Look of CRT 2015 (shading original)", ctrlShift(KeyEvent.VK_O),
                 () -> originalShadingItem.setSelected(!originalShadingItem.isSelected()));
         action("shortcuts", "Keyboard shortcuts", KeyStroke.getKeyStroke(KeyEvent.VK_F1, 0), this::showShortcuts);
         action("about", "About CRT Studio", KeyStroke.getKeyStroke(KeyEvent.VK_F1, InputEvent.SHIFT_DOWN_MASK), () -> JOptionPane.showMessageDialog(frame,

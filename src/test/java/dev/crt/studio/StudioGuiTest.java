@@ -180,7 +180,7 @@ class StudioGuiTest {
     void theLookOfCrt2015RendersWithTheOriginalShadingModel() throws IOException {
         Path file = scene("two-spheres.crt");
         open(file);
-        keys.press(KeyEvent.VK_L, KeyEvent.VK_CONTROL, KeyEvent.VK_SHIFT);
+        keys.press(KeyEvent.VK_O, KeyEvent.VK_CONTROL, KeyEvent.VK_SHIFT);
         keys.press(KeyEvent.VK_F5);
         waitFor("the render to finish", 30, () -> studio.lastRender() != null);
         CompileResult compiled = CrtCompiler.compile(new Source(file.toString(), Files.readString(file), file),
