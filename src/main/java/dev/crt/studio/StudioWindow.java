@@ -528,6 +528,11 @@ final class StudioWindow implements StudioModel.Listener {
     void focusEditor() {
         ScriptEditor e = currentEditor();
         if (e == null) return;
+        // Never raise the window over a question it is waiting for: with no window manager to keep
+        // the dialog above its owner (Xvfb, some kiosks), the question would be hidden and unreachable.
+        for (java.awt.Window w : frame.getOwnedWindows()) {
+            if (w instanceof java.awt.Dialog dialog && dialog.isModal() && dialog.isShowing()) return;
+        }
         frame.toFront();
         // From a floated panel's window, focus must cross windows, which requestFocusInWindow does not.
         if (!frame.isFocused()) e.area().requestFocus();
