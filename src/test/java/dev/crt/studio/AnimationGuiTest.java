@@ -325,11 +325,33 @@ class AnimationGuiTest {
         refusal.requireErrorMessage();
         assertThat(onEdt(() -> refusal.target().getMessage().toString())).isEqualTo("width is computed by the expression "
                 + "'w * 2' at 4:12, not written as a number: change it in the script, or apply the settings to this session only");
-        refusal.okButton().click();
+        // Clicks the loaded machine lost are made again: OK until the refusal is gone, then the radio
+        // button until the settings dialog holds the focus again.
+        for (int i = 0; i < 3 && onEdt(() -> refusal.target().isShowing()); i++) {
+            try {
+                refusal.okButton().click();
+            } catch (RuntimeException closed) {
+                if (onEdt(() -> refusal.target().isShowing())) throw closed;
+            }
+            try {
+                waitFor("the refusal to close", 5, () -> !refusal.target().isShowing());
+            } catch (AssertionError lost) {
+                // again
+            }
+        }
+        waitFor("the refusal to close", 1, () -> !refusal.target().isShowing());
         assertThat(onEdt(() -> studio.model().current().content())).isEqualTo("w = 80\n" + text);
 
-        dialog.radioButton("settingsToSession").check();
-        waitFor("the dialog to hold the focus again", 10, () -> dialog.target().isFocused());
+        for (int i = 0; i < 3 && !onEdt(() -> dialog.target().isFocused()); i++) {
+            dialog.radioButton("settingsToSession").click();
+            try {
+                waitFor("the dialog to hold the focus again", 5, () -> dialog.target().isFocused());
+            } catch (AssertionError lost) {
+                // again
+            }
+        }
+        dialog.radioButton("settingsToSession").requireSelected();
+        waitFor("the dialog to hold the focus again", 1, () -> dialog.target().isFocused());
         clickOk(dialog);
         new org.assertj.swing.fixture.JTextComponentFixture(robot, onEdt(() -> studio.currentEditor().area())).click();
         waitFor("the editor to have the focus", 10, () -> studio.currentEditor().area().isFocusOwner());
