@@ -62,4 +62,26 @@ final class GuiTestSupport {
             }
         }
     }
+
+    /**
+     * For the studios the GUI tests start in a process of their own: opens {@code script} in a studio
+     * on {@code home}'s folders and returns once the window has settled (the editor holding the focus
+     * for half a second, or ten seconds at most).
+     */
+    static StudioWindow openSettled(Path home, Path script) throws Exception {
+        StudioPaths paths = paths(home);
+        StudioWindow[] studio = new StudioWindow[1];
+        javax.swing.SwingUtilities.invokeAndWait(() -> {
+            studio[0] = new StudioWindow(paths);
+            studio[0].show(java.util.List.of(script));
+        });
+        int steady = 0;
+        for (int i = 0; i < 500 && steady < 25; i++) {
+            Thread.sleep(20);
+            boolean focused = java.awt.KeyboardFocusManager.getCurrentKeyboardFocusManager().getFocusOwner()
+                    == studio[0].currentEditor().area();
+            steady = focused ? steady + 1 : 0;
+        }
+        return studio[0];
+    }
 }

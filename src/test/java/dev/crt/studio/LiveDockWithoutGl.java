@@ -1,9 +1,7 @@
 package dev.crt.studio;
 
-import java.awt.KeyboardFocusManager;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.List;
 import javax.swing.SwingUtilities;
 
 /**
@@ -15,19 +13,7 @@ public final class LiveDockWithoutGl {
     private LiveDockWithoutGl() {}
 
     public static void main(String[] args) throws Exception {
-        StudioPaths paths = GuiTestSupport.paths(Path.of(args[0]));
-        StudioWindow[] studio = new StudioWindow[1];
-        SwingUtilities.invokeAndWait(() -> {
-            studio[0] = new StudioWindow(paths);
-            studio[0].show(List.of(Path.of(args[1])));
-        });
-        // Alt+4, once the window has settled (the editor holding the focus for half a second).
-        int steady = 0;
-        for (int i = 0; i < 500 && steady < 25; i++) {
-            Thread.sleep(20);
-            boolean focused = KeyboardFocusManager.getCurrentKeyboardFocusManager().getFocusOwner() == studio[0].currentEditor().area();
-            steady = focused ? steady + 1 : 0;
-        }
+        StudioWindow[] studio = {GuiTestSupport.openSettled(Path.of(args[0]), Path.of(args[1]))};
         SwingUtilities.invokeAndWait(() -> studio[0].action("showLive").actionPerformed(null));
         long end = System.nanoTime() + 30_000_000_000L;
         LiveDock.State[] state = new LiveDock.State[1];

@@ -1,8 +1,6 @@
 package dev.crt.studio;
 
-import java.awt.KeyboardFocusManager;
 import java.nio.file.Path;
-import java.util.List;
 import javax.swing.SwingUtilities;
 
 /**
@@ -14,18 +12,7 @@ public final class RecoveryVictim {
     private RecoveryVictim() {}
 
     public static void main(String[] args) throws Exception {
-        StudioPaths paths = GuiTestSupport.paths(Path.of(args[0]));
-        StudioWindow[] studio = new StudioWindow[1];
-        SwingUtilities.invokeAndWait(() -> {
-            studio[0] = new StudioWindow(paths);
-            studio[0].show(List.of(Path.of(args[1])));
-        });
-        int steady = 0;
-        for (int i = 0; i < 500 && steady < 25; i++) {
-            Thread.sleep(20);
-            boolean focused = KeyboardFocusManager.getCurrentKeyboardFocusManager().getFocusOwner() == studio[0].currentEditor().area();
-            steady = focused ? steady + 1 : 0;
-        }
+        StudioWindow[] studio = {GuiTestSupport.openSettled(Path.of(args[0]), Path.of(args[1]))};
         SwingUtilities.invokeAndWait(() -> {
             var area = studio[0].currentEditor().area();
             area.setCaretPosition(area.getDocument().getLength());
