@@ -114,6 +114,11 @@ final class AnimationPanel extends JPanel implements StudioModel.Listener {
         this.throughput = throughput;
         this.console = console;
         getAccessibleContext().setAccessibleName("Animation");
+        addHierarchyListener(e -> {
+            if ((e.getChangeFlags() & java.awt.event.HierarchyEvent.SHOWING_CHANGED) != 0 && isShowing()) {
+                currentChanged(model.current());
+            }
+        });
 
         JPanel range = new JPanel(new FlowLayout(FlowLayout.LEADING, 6, 2));
         range.add(new JLabel("Frames"));
@@ -611,7 +616,9 @@ final class AnimationPanel extends JPanel implements StudioModel.Listener {
 
     @Override
     public void currentChanged(ScriptDocument document) {
-        if (run == null && document != null) show(shownFrame());
+        // A preview is a compile and a render: none for a panel nobody sees (it sits behind the render
+        // view at start, where it would compete with the window's first paint); it comes when shown.
+        if (run == null && document != null && isShowing()) show(shownFrame());
     }
 
     /** Stops the render, the player and the previews, and deletes the frames' temporary folder. */

@@ -7,7 +7,6 @@ import org.antlr.v4.runtime.Token;
 import org.fife.ui.rsyntaxtextarea.AbstractTokenMakerFactory;
 import org.fife.ui.rsyntaxtextarea.TokenMakerBase;
 import org.fife.ui.rsyntaxtextarea.TokenMakerFactory;
-import org.fife.ui.rsyntaxtextarea.folding.CurlyFoldParser;
 import org.fife.ui.rsyntaxtextarea.folding.FoldParserManager;
 import org.fife.ui.rsyntaxtextarea.TokenTypes;
 
@@ -22,8 +21,10 @@ public final class CrtTokenMaker extends TokenMakerBase {
     static {
         AbstractTokenMakerFactory factory = (AbstractTokenMakerFactory) TokenMakerFactory.getDefaultInstance();
         factory.putMapping(STYLE, CrtTokenMaker.class.getName());
-        FoldParserManager.get().addFoldParserMapping(STYLE, new CurlyFoldParser());
+        FoldParserManager.get().addFoldParserMapping(STYLE, new BraceFoldParser());
     }
+
+    private CRTLexer lexer;
 
     /** Makes the editor library know the CRT style; documents call it before they are created. */
     static void register() {
@@ -35,8 +36,14 @@ public final class CrtTokenMaker extends TokenMakerBase {
         resetTokenList();
         String line = new String(text.array, text.offset, text.count);
         boolean simple = line.codePointCount(0, line.length()) == line.length();
-        CRTLexer lexer = new CRTLexer(CharStreams.fromString(line));
-        lexer.removeErrorListeners();
+        // One lexer per token maker, given each line in turn: making a lexer per line cost more than
+        // lexing the line (opening a 2,500-line script lexes every line once, on the EDT).
+        if (lexer == null) {
+            lexer = new CRTLexer(CharStreams.fromString(line));
+            lexer.removeErrorListeners();
+        } else {
+            lexer.setInputStream(CharStreams.fromString(line));
+        }
         int shift = startOffset - text.offset;
         int pos = 0;
         for (Token t = lexer.nextToken(); t.getType() != Token.EOF; t = lexer.nextToken()) {

@@ -18,12 +18,22 @@ import javax.swing.SwingUtilities;
 
 /**
  * One render of a script for the studio, on its own thread: compile (unless the editor's latest
- * compile is of the same text), a coarse pass at 1/{@value #COARSE} of the size shown at once, then
+ * compile is of the same text), a coarse pass of about {@value #COARSE_PIXELS} pixels shown at once, then
  * the real render whose tiles replace the coarse picture as they finish. Cancel stops it within a row.
  */
 final class RenderJob {
-    /** The coarse pass renders every COARSE-th pixel in each direction, without supersampling. */
+    /** The coarse pass renders every COARSE-th pixel in each direction at least, without supersampling. */
     static final int COARSE = 8;
+    /**
+     * The coarse pass's pixels at most (about): its time is what the first picture waits for, and a
+     * scene with soft shadows and glossy finishes traces dozens of rays per pixel even then.
+     */
+    static final int COARSE_PIXELS = 2000;
+
+    /** The coarse pass's step for a {@code width}×{@code height} picture: every n-th pixel each way. */
+    static int coarseStep(int width, int height) {
+        return Math.max(COARSE, (int) Math.ceil(Math.sqrt((double) width * height / COARSE_PIXELS)));
+    }
 
     /** Told about the render on the Event Dispatch Thread. */
     interface Listener {
@@ -103,7 +113,8 @@ final class RenderJob {
             };
 
             Renderer renderer = Renderer.prepare(scene);
-            int cw = Math.max(1, (width + COARSE - 1) / COARSE), ch = Math.max(1, (height + COARSE - 1) / COARSE);
+            int step = coarseStep(width, height);
+            int cw = Math.max(1, (width + step - 1) / step), ch = Math.max(1, (height + step - 1) / step);
             FrameBuffer coarse = renderer.withImage(cw, ch, 1, 1).render(0, stopper);
             for (int y = 0; y < height; y++) {
                 int cy = Math.min(ch - 1, y * ch / height);

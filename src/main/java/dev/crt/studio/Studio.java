@@ -43,9 +43,12 @@ public final class Studio {
                     code.set(c);
                     closed.countDown();
                 });
+                if (Boolean.getBoolean("crt.studio.train")) {
+                    window.train(files);
+                    return;
+                }
+                window.onFirstPaint(() -> ready(window, start));
                 window.show(files);
-                long ms = (System.nanoTime() - start) / 1_000_000;
-                window.console().log(ConsolePanel.Kind.INFO, "studio ready in " + ms + " ms (" + uptime() + " ms since the JVM started)");
             });
         } catch (InvocationTargetException e) {
             failure.set(e.getCause());
@@ -68,6 +71,26 @@ public final class Studio {
             return 1;
         }
         return code.get();
+    }
+
+    /**
+     * The window is painted and takes keys: says how long that took. With the system property
+     * {@code crt.studio.quitWhenReady} (start-up benchmarks, training the launcher's start-up cache)
+     * the line goes to standard output and the studio quits.
+     */
+    private static void ready(StudioWindow window, long start) {
+        long ms = (System.nanoTime() - start) / 1_000_000;
+        long cpu = -1;
+        if (java.lang.management.ManagementFactory.getOperatingSystemMXBean()
+                instanceof com.sun.management.OperatingSystemMXBean os) cpu = os.getProcessCpuTime() / 1_000_000;
+        String line = "studio ready in " + ms + " ms (" + uptime() + " ms since the JVM started"
+                + (cpu >= 0 ? ", " + cpu + " ms of CPU" : "") + ")";
+        window.console().log(ConsolePanel.Kind.INFO, line);
+        if (Boolean.getBoolean("crt.studio.quitWhenReady")) {
+            System.out.println(line);
+            System.out.flush();
+            System.exit(0);
+        }
     }
 
     private static long uptime() {

@@ -103,6 +103,7 @@ final class StudioWindow implements StudioModel.Listener {
     private final Timer heapTimer;
     private final TransferHandler fileDrop;
     private IntConsumer onExit = code -> {};
+    private Runnable firstPaint;
     private RenderJob job;
     /** The Navigator and Properties panels and the Insert menu (issue 8). */
     private ObjectPanels objects;
@@ -133,7 +134,14 @@ final class StudioWindow implements StudioModel.Listener {
         buildActions();
         buildPanels();
         frame.setJMenuBar(buildMenus());
-        JPanel root = new JPanel(new BorderLayout());
+        JPanel root = new JPanel(new BorderLayout()) {
+            @Override public void paint(java.awt.Graphics g) {
+                super.paint(g);
+                Runnable r = firstPaint;
+                firstPaint = null;
+                if (r != null) r.run();
+            }
+        };
         root.add(buildToolBar(), BorderLayout.NORTH);
         root.add(dock.control().getContentArea(), BorderLayout.CENTER);
         root.add(buildStatusBar(), BorderLayout.SOUTH);
@@ -206,6 +214,9 @@ final class StudioWindow implements StudioModel.Listener {
 
     void onExit(IntConsumer listener) { onExit = listener; }
 
+    /** {@code r} runs once on the EDT, right after the window's whole content was painted the first time. */
+    void onFirstPaint(Runnable r) { firstPaint = r; }
+
     /** Shows the window, offers to recover unsaved work of a studio that died, and opens {@code files}. */
     void show(List<Path> files) {
         frame.setVisible(true);
@@ -216,6 +227,39 @@ final class StudioWindow implements StudioModel.Listener {
         openAll(files);
         if (model.documents().isEmpty()) newDocument();
         focusEditor();
+    }
+
+    /**
+     * Goes through a start without showing anything, for the launcher's start-up cache: the window
+     * is made (unmapped), {@code files} opened and compiled, the content painted into an image, the
+     * script rendered; then the JVM exits, which writes the cache. Classes and code paths a real
+     * start needs are then already loaded and linked when the studio starts the next time.
+     */
+    void train(List<Path> files) {
+        frame.addNotify();
+        openAll(files);
+        if (model.documents().isEmpty()) newDocument();
+        frame.validate();
+        paintInto(new java.awt.image.BufferedImage(frame.getWidth(), frame.getHeight(), java.awt.image.BufferedImage.TYPE_INT_RGB));
+        render();
+        long until = System.nanoTime() + 30_000_000_000L;
+        Timer poll = new Timer(20, null);
+        poll.addActionListener(e -> {
+            if (job != null && System.nanoTime() < until) return;
+            poll.stop();
+            paintInto(new java.awt.image.BufferedImage(frame.getWidth(), frame.getHeight(), java.awt.image.BufferedImage.TYPE_INT_RGB));
+            System.exit(lastRender != null ? 0 : 1);
+        });
+        poll.start();
+    }
+
+    private void paintInto(java.awt.image.BufferedImage image) {
+        java.awt.Graphics2D g = image.createGraphics();
+        try {
+            frame.getRootPane().paint(g);
+        } finally {
+            g.dispose();
+        }
     }
 
     // ---------------------------------------------------------------- building
