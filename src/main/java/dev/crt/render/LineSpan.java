@@ -66,6 +66,10 @@ final class LineSpan {
         /** The sign of d·n for the triangle's winding normal n. */
         double[] facing = new double[8];
         final Ray localRay = new Ray();
+        /** The nearest crossing found so far by a first-hit walk: its t, triangle and facing. */
+        double nearT;
+        int nearTriangle;
+        double nearFacing;
         private BvhWalker walker;
         private int walkerDepth;
 

@@ -22,6 +22,8 @@ final class MeshGeometry {
     final Bvh bvh;
     final boolean closed;
     final Aabb bounds;
+    /** {@link #bounds} as (minX, minY, minZ, maxX, maxY, maxZ) and the length of its diagonal. */
+    final double[] box;
 
     MeshGeometry(MeshData data) {
         positions = data.positions();
@@ -59,6 +61,8 @@ final class MeshGeometry {
             maxZ = Math.max(maxZ, z1);
         }
         bounds = new Aabb(new Vec3(minX, minY, minZ), new Vec3(maxX, maxY, maxZ));
+        double ex = maxX - minX, ey = maxY - minY, ez = maxZ - minZ;
+        box = new double[] {minX, minY, minZ, maxX, maxY, maxZ, Math.sqrt(ex * ex + ey * ey + ez * ez)};
         if (count > LINEAR_LIMIT) {
             int[] order = new int[count];
             bvh = BvhBuilder.build(flat, count, order);

@@ -7,9 +7,10 @@ import dev.crt.scene.Mesh;
 /**
  * Triangle meshes: an instance is its {@link Affine} placement and the index of its shared
  * {@link MeshGeometry} in {@link Shapes#meshes}; the ray goes into the mesh's coordinates and
- * walks the mesh's own BVH (the second level under the scene's). Every crossing along the line is
- * found; a closed mesh's inside is where the line has crossed an odd number of times, an open
- * mesh is a surface (each crossing one point).
+ * walks the mesh's own BVH (the second level under the scene's). For CSG every crossing along the
+ * line is found ({@link #span}); a closed mesh's inside is where the line has crossed an odd number
+ * of times, an open mesh is a surface (each crossing one point). A mesh standing alone stops at its
+ * nearest triangle ({@link #firstHit}) or at any triangle in the shadow ray's segment ({@link #anyHit}).
  *
  * <p>The ray–triangle test is the watertight one of Woop, Benthin and Wald (JCGT 2013): the
  * vertices are sheared into the ray's frame and the three edge functions are products of the
@@ -47,22 +48,7 @@ final class MeshShape {
     }
 
     static boolean span(double[] a, int o, Ray ray, LineSpan out, MeshGeometry g) {
-        ray.toLocal(a, o);
-        double ox = ray.lox, oy = ray.loy, oz = ray.loz, dx = ray.ldx, dy = ray.ldy, dz = ray.ldz;
-        // The shear of the watertight test: kz is the dominant axis of d, kx and ky follow it,
-        // swapped when d points down kz so that the winding seen along the ray is kept.
-        double ax = Math.abs(dx), ay = Math.abs(dy), az = Math.abs(dz);
-        int kz = ax > ay ? (ax > az ? 0 : 2) : (ay > az ? 1 : 2);
-        int kx = kz == 2 ? 0 : kz + 1, ky = kx == 2 ? 0 : kx + 1;
-        double dkz = kz == 0 ? dx : kz == 1 ? dy : dz;
-        if (dkz < 0) {
-            int swap = kx;
-            kx = ky;
-            ky = swap;
-        }
-        double dkx = kx == 0 ? dx : kx == 1 ? dy : dz, dky = ky == 0 ? dx : ky == 1 ? dy : dz;
-        LineSpan.Crossings c = out.crossings();
-        c.set(ox, oy, oz, dx, dy, dz, kx, ky, kz, dkx / dkz, dky / dkz, 1 / dkz);
+        LineSpan.Crossings c = shear(a, o, ray, out);
         c.count = 0;
         if (g.bvh == null) {
             for (int t = 0; t < g.count; t++) triangle(g, t, c);
@@ -94,6 +80,114 @@ final class MeshShape {
         return out.count > 0;
     }
 
+    /**
+     * The nearest crossing with 0 &lt; t &lt; tMax into {@code hit}: the mesh's BVH is walked nearest
+     * box first and the far end shrinks to each hit found, so a ray stops at the first surface it
+     * meets. The same triangle test as {@link #span}, so the nearest crossing is the same one, at
+     * the same t. A closed mesh's face is flipped as where the ray enters it (the winding normal
+     * faced along the ray): the parity of the crossings behind is not known here, which is why
+     * materials that read the side take {@link #span} instead (Shapes#parity).
+     */
+    static boolean firstHit(double[] a, int o, Ray ray, double tMax, LineSpan scratch, MeshGeometry g, int s, Hit hit) {
+        LineSpan.Crossings c = shear(a, o, ray, scratch);
+        c.nearT = tMax;
+        c.nearTriangle = -1;
+        if (g.bvh == null) {
+            for (int t = 0; t < g.count; t++) nearer(g, t, c);
+        } else {
+            BvhWalker walk = c.walker(g.bvh.depth + 2);
+            if (walk.start(g.bvh, local(ray, c), 0, tMax)) {
+                for (int leaf = walk.nextNearest(c.nearT); leaf != BvhWalker.END; leaf = walk.nextNearest(c.nearT)) {
+                    for (int t = Bvh.leafFirst(leaf), end = t + Bvh.leafCount(leaf); t < end; t++) nearer(g, t, c);
+                }
+            }
+        }
+        if (c.nearTriangle < 0) return false;
+        hit.t = c.nearT;
+        hit.shape = s;
+        // The side, as the span's parity says: entering when an even number of crossings lie at t ≤ 0.
+        int flip = 0;
+        if (g.closed) flip = (crossingsBehind(g, c) & 1) == 0 ? (c.nearFacing > 0 ? 1 : 0) : (c.nearFacing < 0 ? 1 : 0);
+        hit.face = 2 * c.nearTriangle + flip;
+        hit.flip = false;
+        return true;
+    }
+
+    /**
+     * How many crossings of the line of {@code c} lie at t ≤ 0, for a ray that hits the mesh ahead.
+     * None when the origin lies outside the mesh's box (widened by 2⁻³⁰ of its size): the line meets
+     * the box in one piece, which then lies wholly ahead. Otherwise the walk of (−∞, nearest hit]
+     * counts them with the same triangle test as {@link #span}.
+     */
+    private static int crossingsBehind(MeshGeometry g, LineSpan.Crossings c) {
+        double[] o = c.o;
+        double[] b = g.box;
+        double margin = 0x1p-30 * (b[6] + Math.abs(o[0]) + Math.abs(o[1]) + Math.abs(o[2]));
+        if (o[0] < b[0] - margin || o[1] < b[1] - margin || o[2] < b[2] - margin || o[0] > b[3] + margin
+                || o[1] > b[4] + margin || o[2] > b[5] + margin) {
+            return 0;
+        }
+        int n = 0;
+        if (g.bvh == null) {
+            for (int t = 0; t < g.count; t++) {
+                if (crossing(g, t, c) <= 0) n++;
+            }
+            return n;
+        }
+        BvhWalker walk = c.walker(g.bvh.depth + 2);
+        if (!walk.start(g.bvh, c.localRay, Double.NEGATIVE_INFINITY, c.nearT)) return 0;
+        for (int leaf = walk.nextAny(c.nearT); leaf != BvhWalker.END; leaf = walk.nextAny(c.nearT)) {
+            for (int t = Bvh.leafFirst(leaf), end = t + Bvh.leafCount(leaf); t < end; t++) {
+                if (crossing(g, t, c) <= 0) n++;
+            }
+        }
+        return n;
+    }
+
+    /** Whether some triangle crosses the ray with 0 &lt; t &lt; tMax: the walk ends at the first one found. */
+    static boolean anyHit(double[] a, int o, Ray ray, double tMax, LineSpan scratch, MeshGeometry g) {
+        LineSpan.Crossings c = shear(a, o, ray, scratch);
+        c.nearT = tMax;
+        c.nearTriangle = -1;
+        if (g.bvh == null) {
+            for (int t = 0; t < g.count; t++) {
+                if (nearer(g, t, c)) return true;
+            }
+            return false;
+        }
+        BvhWalker walk = c.walker(g.bvh.depth + 2);
+        if (!walk.start(g.bvh, local(ray, c), 0, tMax)) return false;
+        for (int leaf = walk.nextAny(tMax); leaf != BvhWalker.END; leaf = walk.nextAny(tMax)) {
+            for (int t = Bvh.leafFirst(leaf), end = t + Bvh.leafCount(leaf); t < end; t++) {
+                if (nearer(g, t, c)) return true;
+            }
+        }
+        return false;
+    }
+
+    /**
+     * The ray in mesh coordinates and the shear of the watertight test, into the thread's
+     * crossing scratch: kz is the dominant axis of d, kx and ky follow it, swapped when d points
+     * down kz so that the winding seen along the ray is kept.
+     */
+    private static LineSpan.Crossings shear(double[] a, int o, Ray ray, LineSpan out) {
+        ray.toLocal(a, o);
+        double ox = ray.lox, oy = ray.loy, oz = ray.loz, dx = ray.ldx, dy = ray.ldy, dz = ray.ldz;
+        double ax = Math.abs(dx), ay = Math.abs(dy), az = Math.abs(dz);
+        int kz = ax > ay ? (ax > az ? 0 : 2) : (ay > az ? 1 : 2);
+        int kx = kz == 2 ? 0 : kz + 1, ky = kx == 2 ? 0 : kx + 1;
+        double dkz = kz == 0 ? dx : kz == 1 ? dy : dz;
+        if (dkz < 0) {
+            int swap = kx;
+            kx = ky;
+            ky = swap;
+        }
+        double dkx = kx == 0 ? dx : kx == 1 ? dy : dz, dky = ky == 0 ? dx : ky == 1 ? dy : dz;
+        LineSpan.Crossings c = out.crossings();
+        c.set(ox, oy, oz, dx, dy, dz, kx, ky, kz, dkx / dkz, dky / dkz, 1 / dkz);
+        return c;
+    }
+
     /** The ray in mesh coordinates as a {@link Ray}, for walking the mesh's BVH. */
     private static Ray local(Ray ray, LineSpan.Crossings c) {
         Ray r = c.localRay;
@@ -103,6 +197,25 @@ final class MeshShape {
 
     /** Tests triangle {@code t} (in leaf order) and records a crossing in {@code c}. */
     private static void triangle(MeshGeometry g, int t, LineSpan.Crossings c) {
+        double tt = crossing(g, t, c);
+        if (tt == tt) c.add(tt, t, facing(g, t, c));
+    }
+
+    /**
+     * Tests triangle {@code t} and, when it crosses the ray with 0 &lt; t &lt; c.nearT, makes it the
+     * nearest crossing of {@code c}; returns whether it did.
+     */
+    private static boolean nearer(MeshGeometry g, int t, LineSpan.Crossings c) {
+        double tt = crossing(g, t, c);
+        if (!(tt > 0 && tt < c.nearT)) return false;
+        c.nearT = tt;
+        c.nearTriangle = t;
+        c.nearFacing = facing(g, t, c);
+        return true;
+    }
+
+    /** Where triangle {@code t} (in leaf order) crosses the line of {@code c}, or NaN when it does not. */
+    private static double crossing(MeshGeometry g, int t, LineSpan.Crossings c) {
         double[] p = g.positions;
         int[] tri = g.triangles;
         int ia = 3 * tri[3 * t], ib = 3 * tri[3 * t + 1], ic = 3 * tri[3 * t + 2];
@@ -115,20 +228,25 @@ final class MeshShape {
         double u = cxs * bys - cys * bxs;
         double v = axs * cys - ays * cxs;
         double w = bxs * ays - bys * axs;
-        if ((u < 0 || v < 0 || w < 0) && (u > 0 || v > 0 || w > 0)) return;
+        if ((u < 0 || v < 0 || w < 0) && (u > 0 || v > 0 || w > 0)) return Double.NaN;
         double det = u + v + w;
-        if (det == 0) return;
+        if (det == 0) return Double.NaN;
         double sign = det > 0 ? 1 : -1;
         // Edges in the counter-clockwise order of the positive orientation: C→B (u), A→C (v), B→A (w).
-        if (u == 0 && !topLeft(sign * (bxs - cxs), sign * (bys - cys))) return;
-        if (v == 0 && !topLeft(sign * (cxs - axs), sign * (cys - ays))) return;
-        if (w == 0 && !topLeft(sign * (axs - bxs), sign * (ays - bys))) return;
-        double tt = (u * azr + v * bzr + w * czr) * c.sz / det;
-        // Which side the winding normal (B − A) × (C − A) faces, seen along the ray.
+        if (u == 0 && !topLeft(sign * (bxs - cxs), sign * (bys - cys))) return Double.NaN;
+        if (v == 0 && !topLeft(sign * (cxs - axs), sign * (cys - ays))) return Double.NaN;
+        if (w == 0 && !topLeft(sign * (axs - bxs), sign * (ays - bys))) return Double.NaN;
+        return (u * azr + v * bzr + w * czr) * c.sz / det;
+    }
+
+    /** Which side the winding normal (B − A) × (C − A) of triangle {@code t} faces, seen along the ray: the sign of d·n. */
+    private static double facing(MeshGeometry g, int t, LineSpan.Crossings c) {
+        double[] p = g.positions;
+        int[] tri = g.triangles;
+        int ia = 3 * tri[3 * t], ib = 3 * tri[3 * t + 1], ic = 3 * tri[3 * t + 2];
         double e1x = p[ib] - p[ia], e1y = p[ib + 1] - p[ia + 1], e1z = p[ib + 2] - p[ia + 2];
         double e2x = p[ic] - p[ia], e2y = p[ic + 1] - p[ia + 1], e2z = p[ic + 2] - p[ia + 2];
-        double facing = (e1y * e2z - e1z * e2y) * c.dx + (e1z * e2x - e1x * e2z) * c.dy + (e1x * e2y - e1y * e2x) * c.dz;
-        c.add(tt, t, facing);
+        return (e1y * e2z - e1z * e2y) * c.dx + (e1z * e2x - e1x * e2z) * c.dy + (e1x * e2y - e1y * e2x) * c.dz;
     }
 
     /** The top-left rule for an edge (ex, ey) of a counter-clockwise triangle: left edges go down, top edges go left. */

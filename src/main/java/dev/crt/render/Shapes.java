@@ -209,6 +209,80 @@ final class Shapes {
     }
 
     /**
+     * The nearest crossing of shape {@code s} with 0 &lt; t &lt; tMax into {@code hit} (t, shape, face;
+     * flip false), for a shape standing alone (CSG gathers crossings with {@link #span}). Meshes and
+     * tori stop at the nearest hit instead of gathering the whole line; the other kinds read the
+     * first crossing of their span, which is as cheap. {@code scratch} is the thread's span.
+     */
+    boolean firstHit(int s, Ray ray, double tMax, LineSpan scratch, Hit hit) {
+        int o = offset[s];
+        double[] a = data;
+        switch (kind[s]) {
+            case MESH:
+                return MeshShape.firstHit(a, o, ray, tMax, scratch, meshes[(int) a[o + Affine.SIZE]], s, hit);
+            case TORUS:
+                if (!TorusShape.mayHit(a, o, ray, 0, tMax)) return false;
+                break;
+            case SPHERE, BOX, PLANE, MAPPED_SPHERE, MAPPED_BOX, CONE, EMPTY:
+                break;
+            default:
+                throw unknown(s);
+        }
+        if (!span(s, ray, scratch)) return false;
+        return firstOf(scratch, s, tMax, hit);
+    }
+
+    /** The first crossing of {@code span} with 0 &lt; t &lt; tMax into {@code hit}. */
+    private static boolean firstOf(LineSpan span, int s, double tMax, Hit hit) {
+        for (int i = 0; i < span.count; i++) {
+            double t;
+            int face;
+            if (span.tIn[i] > 0) {
+                t = span.tIn[i];
+                face = span.faceIn[i];
+            } else if (span.tOut[i] > 0) {
+                t = span.tOut[i];
+                face = span.faceOut[i];
+            } else {
+                continue;
+            }
+            if (!(t < tMax)) return false;
+            hit.t = t;
+            hit.shape = s;
+            hit.face = face;
+            hit.flip = false;
+            return true;
+        }
+        return false;
+    }
+
+    /**
+     * Whether shape {@code s} (standing alone) crosses the ray anywhere with 0 &lt; t &lt; tMax: the
+     * shadow test of an opaque shape, which stops at the first crossing found.
+     */
+    boolean anyHit(int s, Ray ray, double tMax, LineSpan scratch) {
+        int o = offset[s];
+        double[] a = data;
+        switch (kind[s]) {
+            case MESH:
+                return MeshShape.anyHit(a, o, ray, tMax, scratch, meshes[(int) a[o + Affine.SIZE]]);
+            case TORUS:
+                if (!TorusShape.mayHit(a, o, ray, 0, tMax)) return false;
+                break;
+            case SPHERE, BOX, PLANE, MAPPED_SPHERE, MAPPED_BOX, CONE, EMPTY:
+                break;
+            default:
+                throw unknown(s);
+        }
+        if (!span(s, ray, scratch)) return false;
+        for (int i = 0; i < scratch.count; i++) {
+            double in = scratch.tIn[i], out = scratch.tOut[i];
+            if (in > 0 && in < tMax || out > 0 && out < tMax) return true;
+        }
+        return false;
+    }
+
+    /**
      * The surface point of shape {@code s} at parameter {@code t} of {@code ray} on {@code face},
      * snapped back onto the exact surface (so its error scales with its own coordinates, not with the
      * ray's length), and the primitive's outward unit normal there.

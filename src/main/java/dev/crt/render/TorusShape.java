@@ -79,6 +79,57 @@ final class TorusShape {
     }
 
     /**
+     * Whether the ray can meet the torus with tMin &lt; t &lt; tMax: false when the part of its line
+     * within the slab |z| ≤ r and the cylinder ρ ≤ R + r (widened as in {@link #mayCross}, and by
+     * 2⁻²⁰ of R + r more) lies wholly outside that range. Every root {@link #span} would find lies
+     * in that part, so a closest hit or shadow ray that cannot reach it skips the quartic.
+     */
+    static boolean mayHit(double[] a, int o, Ray ray, double tMin, double tMax) {
+        ray.toLocal(a, o);
+        double big = a[o + Affine.SIZE], small = a[o + Affine.SIZE + 1];
+        double dx = ray.ldx, dy = ray.ldy, dz = ray.ldz;
+        double length = Math.sqrt(dx * dx + dy * dy + dz * dz);
+        dx /= length;
+        dy /= length;
+        dz /= length;
+        double s0 = -(ray.lox * dx + ray.loy * dy + ray.loz * dz);
+        double ox = ray.lox + s0 * dx, oy = ray.loy + s0 * dy, oz = ray.loz + s0 * dz;
+        double reach = big + small;
+        if (ox * ox + oy * oy + oz * oz > reach * reach) return false;
+        double slack = 0x1p-30 * reach;
+        double lo = Double.NEGATIVE_INFINITY, hi = Double.POSITIVE_INFINITY;
+        if (dz == 0) {
+            if (Math.abs(oz) > small + slack) return false;
+        } else {
+            double p = (-small - slack - oz) / dz, q = (small + slack - oz) / dz;
+            lo = Math.min(p, q);
+            hi = Math.max(p, q);
+        }
+        double qa = dx * dx + dy * dy;
+        double qb = ox * dx + oy * dy;
+        double wide = reach + slack;
+        double qc = ox * ox + oy * oy - wide * wide;
+        if (qa == 0) {
+            if (qc > 0) return false;
+        } else {
+            double disc = qb * qb - qa * qc;
+            if (disc < 0) return false;
+            double root = Math.sqrt(disc);
+            lo = Math.max(lo, (-qb - root) / qa);
+            hi = Math.min(hi, (-qb + root) / qa);
+        }
+        // Also within the sphere of radius R + r, where the quartic's roots are sought.
+        double half = Math.sqrt(Math.max(0, reach * reach - (ox * ox + oy * oy + oz * oz)));
+        lo = Math.max(lo, -half);
+        hi = Math.min(hi, half);
+        double margin = 0x1p-20 * reach;
+        lo -= margin;
+        hi += margin;
+        if (!(lo <= hi)) return false;
+        return (hi + s0) / length > tMin && (lo + s0) / length < tMax;
+    }
+
+    /**
      * Whether the line can meet the torus at all: it must be within the slab |z| ≤ r and within
      * the cylinder ρ ≤ R + r at once. Most lines that reach a torus's box but miss the torus fail
      * here, before any quartic; the test is widened by a hair so it never drops a grazing hit.

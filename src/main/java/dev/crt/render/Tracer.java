@@ -415,27 +415,7 @@ final class Tracer {
 
     private boolean hitItem(int item, double tMax) {
         if (item < 0) return csg.closestHit(-item - 1, ray, tMax, shapes, geometry.materials, span, csgScratch, hit);
-        if (!shapes.span(item, ray, span)) return false;
-        for (int i = 0; i < span.count; i++) {
-            double t;
-            int face;
-            if (span.tIn[i] > 0) {
-                t = span.tIn[i];
-                face = span.faceIn[i];
-            } else if (span.tOut[i] > 0) {
-                t = span.tOut[i];
-                face = span.faceOut[i];
-            } else {
-                continue;
-            }
-            if (!(t < tMax)) return false;
-            hit.t = t;
-            hit.shape = item;
-            hit.face = face;
-            hit.flip = false;
-            return true;
-        }
-        return false;
+        return shapes.firstHit(item, ray, tMax, span, hit);
     }
 
     /**
@@ -500,6 +480,10 @@ final class Tracer {
             depthB += sc.depthB;
             return kt;
         }
+        int m = shapes.material[item] * Materials.STRIDE;
+        if (materials[m + Materials.TRANSPARENCY] == 0 && materials[m + Materials.TEX_TRANSPARENCY] == 0) {
+            return shapes.anyHit(item, ray, tMax, span) ? 0 : 1;
+        }
         if (!shapes.span(item, ray, span)) return 1;
         int crossings = 0;
         for (int i = 0; i < span.count; i++) {
@@ -507,7 +491,6 @@ final class Tracer {
             if (span.tOut[i] > 0 && span.tOut[i] < tMax && !span.surface) crossings++;
         }
         if (crossings == 0) return 1;
-        int m = shapes.material[item] * Materials.STRIDE;
         if (materials[m + Materials.TEX_TRANSPARENCY] != 0) return texturedTransmittance(item, m, tMax);
         double kt = materials[m + Materials.TRANSPARENCY];
         if (absorbing && kt != 0 && !span.surface) absorb(m, tMax);

@@ -49,6 +49,7 @@ class ShapeKindsTest {
         Ray ray = new Ray();
         LineSpan span = new LineSpan();
         SurfacePoint point = new SurfacePoint();
+        Hit hit = new Hit();
         for (Primitive p : samples()) {
             Shapes shapes = new Shapes();
             int s = shapes.add(p, p.transform(), 0);
@@ -57,6 +58,9 @@ class ShapeKindsTest {
             Aabb b = shapes.bounds(s);
             if (kind == Shapes.EMPTY) {
                 assertThat(b.isEmpty()).isTrue();
+                ray.set(0, 0, -5, 0, 0, 1);
+                assertThat(shapes.firstHit(s, ray, Double.POSITIVE_INFINITY, span, hit)).isFalse();
+                assertThat(shapes.anyHit(s, ray, Double.POSITIVE_INFINITY, span)).isFalse();
                 continue;
             }
             // Aimed from outside through the middle of what the shape occupies, or, for a ring,
@@ -73,6 +77,11 @@ class ShapeKindsTest {
             assertThat(span.count).isPositive();
             double t = Double.isFinite(span.tIn[0]) ? span.tIn[0] : span.tOut[0];
             int face = Double.isFinite(span.tIn[0]) ? span.faceIn[0] : span.faceOut[0];
+            // The first-hit and shadow paths of a shape standing alone reach the same crossing.
+            assertThat(shapes.anyHit(s, ray, Double.POSITIVE_INFINITY, new LineSpan())).as("kind %d shadow", kind).isTrue();
+            assertThat(shapes.firstHit(s, ray, Double.POSITIVE_INFINITY, new LineSpan(), hit)).as("kind %d first hit", kind).isTrue();
+            assertThat(hit.t).isEqualTo(t);
+            assertThat(hit.face).isEqualTo(face);
             shapes.surface(s, face, t, ray, point);
             assertThat(Math.sqrt(point.nx * point.nx + point.ny * point.ny + point.nz * point.nz)).isCloseTo(1, org.assertj.core.data.Offset.offset(1e-12));
             shapes.frame(s, face, point);
