@@ -52,7 +52,8 @@ class BvhBuilderTest {
         }
         int leaves = 0;
         for (int c = 0; c < 2; c++) {
-            double[] child = java.util.Arrays.copyOfRange(bvh.box, 12 * node + 6 * c, 12 * node + 6 * c + 6);
+            double[] child = new double[6];
+            for (int a = 0; a < 6; a++) child[a] = bvh.bound(node, c, a);
             for (int a = 0; a < 3; a++) {
                 assertThat(child[a]).isGreaterThanOrEqualTo(box[a]);
                 assertThat(child[3 + a]).isLessThanOrEqualTo(box[3 + a]);
