@@ -16,25 +16,21 @@ final class BvhBuilder {
     private static final double INTERSECTION_COST = 1.5;
 
     /**
-     * Boxes and centroids by position in {@link #order}; partitioning moves them with their items,
-     * so every pass over a range reads memory in sequence.
+     * Boxes by position in {@link #order}; partitioning moves them with their items, so every pass
+     * over a range reads memory in sequence. Centroids are computed from them where needed rather
+     * than stored: at a million items the build is bound by memory traffic, not arithmetic.
      */
     private final double[] bounds;
-    private final double[] centroid;
     /** The item order: leaves refer to ranges of it. */
     final int[] order;
 
     private BvhBuilder(double[] itemBounds, int n) {
         bounds = itemBounds.clone();
-        centroid = new double[3 * n];
         order = new int[n];
         childBox = new double[12 * (n - 1)];
         children = new int[2 * (n - 1)];
         inner = new boolean[n - 1];
-        for (int i = 0; i < n; i++) {
-            order[i] = i;
-            for (int a = 0; a < 3; a++) centroid[3 * i + a] = 0.5 * (bounds[6 * i + a] + bounds[6 * i + 3 + a]);
-        }
+        for (int i = 0; i < n; i++) order[i] = i;
     }
 
     private void swap(int i, int j) {
@@ -45,11 +41,6 @@ final class BvhBuilder {
             double v = bounds[6 * i + a];
             bounds[6 * i + a] = bounds[6 * j + a];
             bounds[6 * j + a] = v;
-        }
-        for (int a = 0; a < 3; a++) {
-            double v = centroid[3 * i + a];
-            centroid[3 * i + a] = centroid[3 * j + a];
-            centroid[3 * j + a] = v;
         }
     }
 
@@ -83,18 +74,20 @@ final class BvhBuilder {
         if (n <= MAX_LEAF || n > (Integer.MAX_VALUE >>> Bvh.LEAF_COUNT_BITS)) throw new IllegalArgumentException("items: " + n);
         BvhBuilder b = new BvhBuilder(bounds, n);
         double[] rootBox = new double[6];
+        double[] rootCentroids = new double[6];
+        b.measure(0, n, rootBox, 0, rootCentroids, 0);
         int root;
         if (n > PARALLEL_THRESHOLD) {
             // A pool of its own: the common pool leaves one core idle (its parallelism is cores − 1,
             // and the thread that submits only waits).
             ForkJoinPool pool = new ForkJoinPool(Runtime.getRuntime().availableProcessors());
             try {
-                root = pool.invoke(b.new Task(0, n, 0, rootBox, 0));
+                root = pool.invoke(b.new Task(0, n, 0, 0, rootBox, 0, rootCentroids, 0));
             } finally {
                 pool.shutdown();
             }
         } else {
-            root = b.subtree(0, n, 0, new Scratch(), rootBox, 0);
+            root = b.subtree(0, n, 0, 0, new Scratch(), rootBox, 0, rootCentroids, 0);
         }
         System.arraycopy(b.order, 0, orderOut, 0, n);
         if (Bvh.isLeaf(root)) throw new IllegalStateException("a root leaf over " + n + " items");
@@ -134,43 +127,54 @@ final class BvhBuilder {
 
     private final class Task extends RecursiveTask<Integer> {
         private static final long serialVersionUID = 1L;
-        private final int lo, hi, at;
-        private final double[] boxOut;
+        private final int lo, hi, at, depth;
+        private final double[] box;
         private final int boxAt;
+        /** The range's centroid bounds, copied: the parent's scratch moves on while this task waits. */
+        private final double[] centroids;
 
-        Task(int lo, int hi, int at, double[] boxOut, int boxAt) {
+        Task(int lo, int hi, int at, int depth, double[] box, int boxAt, double[] centroids, int centroidsAt) {
             this.lo = lo;
             this.hi = hi;
             this.at = at;
-            this.boxOut = boxOut;
+            this.depth = depth;
+            this.box = box;
             this.boxAt = boxAt;
+            this.centroids = java.util.Arrays.copyOfRange(centroids, centroidsAt, centroidsAt + 6);
         }
 
         @Override
         protected Integer compute() {
             Scratch sc = new Scratch();
-            int mid = split(lo, hi, sc, boxOut, boxAt);
+            int mid = split(lo, hi, sc, box, boxAt, centroids, 0, at, depth);
             if (mid < 0) return Bvh.leaf(lo, hi - lo);
             inner[at] = true;
-            int leftAt = at + 1, rightAt = at + (mid - lo);
-            Task left = new Task(lo, mid, leftAt, childBox, 12 * at);
-            Task right = new Task(mid, hi, rightAt, childBox, 12 * at + 6);
+            double[] c = sc.centroids;
+            int cAt = 12 * depth, leftAt = at + 1, rightAt = at + (mid - lo);
+            Task left = new Task(lo, mid, leftAt, depth + 1, childBox, 12 * at, c, cAt);
             if (mid - lo > PARALLEL_THRESHOLD) left.fork();
-            children[2 * at + 1] = hi - mid > PARALLEL_THRESHOLD ? right.compute()
-                    : subtree(mid, hi, rightAt, sc, childBox, 12 * at + 6);
+            children[2 * at + 1] = hi - mid > PARALLEL_THRESHOLD
+                    ? new Task(mid, hi, rightAt, depth + 1, childBox, 12 * at + 6, c, cAt + 6).compute()
+                    : subtree(mid, hi, rightAt, depth + 1, sc, childBox, 12 * at + 6, c, cAt + 6);
             children[2 * at] = mid - lo > PARALLEL_THRESHOLD ? left.join()
-                    : subtree(lo, mid, leftAt, sc, childBox, 12 * at);
+                    : subtree(lo, mid, leftAt, depth + 1, sc, childBox, 12 * at, c, cAt);
             return at;
         }
     }
 
-    /** Builds the subtree over [lo, hi) from slot {@code at}, its box into {@code boxOut}; returns its root (a slot or a leaf). */
-    private int subtree(int lo, int hi, int at, Scratch sc, double[] boxOut, int boxAt) {
-        int mid = split(lo, hi, sc, boxOut, boxAt);
+    /**
+     * Builds the subtree over [lo, hi) from slot {@code at}, at {@code depth} below the root; its
+     * box is at {@code boxAt} in {@code box} and the bounds of its centroids at {@code cAt} in
+     * {@code centroids} (both written by the parent's split). Returns its root (a slot or a leaf).
+     */
+    private int subtree(int lo, int hi, int at, int depth, Scratch sc, double[] box, int boxAt, double[] centroids, int cAt) {
+        int mid = split(lo, hi, sc, box, boxAt, centroids, cAt, at, depth);
         if (mid < 0) return Bvh.leaf(lo, hi - lo);
         inner[at] = true;
-        children[2 * at] = subtree(lo, mid, at + 1, sc, childBox, 12 * at);
-        children[2 * at + 1] = subtree(mid, hi, at + (mid - lo), sc, childBox, 12 * at + 6);
+        // Read after the split: it may have grown the array.
+        double[] c = sc.centroids;
+        children[2 * at] = subtree(lo, mid, at + 1, depth + 1, sc, childBox, 12 * at, c, 12 * depth);
+        children[2 * at + 1] = subtree(mid, hi, at + (mid - lo), depth + 1, sc, childBox, 12 * at + 6, c, 12 * depth + 6);
         return at;
     }
 
@@ -186,7 +190,13 @@ final class BvhBuilder {
         final double[] rightArea = new double[BINS];
         final int[] rightCount = new int[BINS];
         final double[] acc = new double[6];
-        final double[] cmin = new double[3], cmax = new double[3], scale = new double[3];
+        final double[] scale = new double[3];
+        /**
+         * Per depth d, at 12·d, the centroid bounds (min x, y, z, max x, y, z) of the two halves
+         * of the last range split at that depth: a split hands them to its halves, which are
+         * built before anything at that depth is split again.
+         */
+        double[] centroids = new double[12 * 32];
 
         Scratch() {
             for (int b = 0; b < 3 * BINS; b++) resetBox(binBox, b);
@@ -194,24 +204,17 @@ final class BvhBuilder {
     }
 
     /**
-     * Writes the box of [lo, hi) into {@code box} at {@code at}, then partitions the range by the
-     * best SAH split and returns its middle, or returns −1 when the range is a leaf.
+     * The box of items [lo, hi) into {@code box} at {@code at} and the bounds of their centroids
+     * into {@code centroids} at {@code cAt}: for the root, and for halves of a split in the middle.
+     * Comparisons rather than Math.min and Math.max, which also order −0 and NaN: item bounds are
+     * finite, and −0 and +0 act alike in a slab test and an area.
      */
-    private int split(int lo, int hi, Scratch sc, double[] box, int at) {
-        int n = hi - lo;
-        // One pass for the node's box and the bounds of the centroids.
-        double[] cmin = sc.cmin, cmax = sc.cmax;
+    private void measure(int lo, int hi, double[] box, int at, double[] centroids, int cAt) {
         double minX = Double.POSITIVE_INFINITY, minY = Double.POSITIVE_INFINITY, minZ = Double.POSITIVE_INFINITY;
         double maxX = Double.NEGATIVE_INFINITY, maxY = Double.NEGATIVE_INFINITY, maxZ = Double.NEGATIVE_INFINITY;
-        for (int a = 0; a < 3; a++) {
-            cmin[a] = Double.POSITIVE_INFINITY;
-            cmax[a] = Double.NEGATIVE_INFINITY;
-        }
         double cminX = Double.POSITIVE_INFINITY, cminY = Double.POSITIVE_INFINITY, cminZ = Double.POSITIVE_INFINITY;
         double cmaxX = Double.NEGATIVE_INFINITY, cmaxY = Double.NEGATIVE_INFINITY, cmaxZ = Double.NEGATIVE_INFINITY;
-        // Comparisons rather than Math.min and Math.max, which also order −0 and NaN: item bounds
-        // are finite, and these loops run over every item at every level of the tree.
-        double[] bounds = this.bounds, centroid = this.centroid;
+        double[] bounds = this.bounds;
         for (int i = lo; i < hi; i++) {
             int k = 6 * i;
             double v;
@@ -221,26 +224,40 @@ final class BvhBuilder {
             if ((v = bounds[k + 3]) > maxX) maxX = v;
             if ((v = bounds[k + 4]) > maxY) maxY = v;
             if ((v = bounds[k + 5]) > maxZ) maxZ = v;
-            int c = 3 * i;
-            if ((v = centroid[c]) < cminX) cminX = v;
+            if ((v = 0.5 * (bounds[k] + bounds[k + 3])) < cminX) cminX = v;
             if (v > cmaxX) cmaxX = v;
-            if ((v = centroid[c + 1]) < cminY) cminY = v;
+            if ((v = 0.5 * (bounds[k + 1] + bounds[k + 4])) < cminY) cminY = v;
             if (v > cmaxY) cmaxY = v;
-            if ((v = centroid[c + 2]) < cminZ) cminZ = v;
+            if ((v = 0.5 * (bounds[k + 2] + bounds[k + 5])) < cminZ) cminZ = v;
             if (v > cmaxZ) cmaxZ = v;
         }
-        cmin[0] = cminX;
-        cmin[1] = cminY;
-        cmin[2] = cminZ;
-        cmax[0] = cmaxX;
-        cmax[1] = cmaxY;
-        cmax[2] = cmaxZ;
         box[at] = minX;
         box[at + 1] = minY;
         box[at + 2] = minZ;
         box[at + 3] = maxX;
         box[at + 4] = maxY;
         box[at + 5] = maxZ;
+        centroids[cAt] = cminX;
+        centroids[cAt + 1] = cminY;
+        centroids[cAt + 2] = cminZ;
+        centroids[cAt + 3] = cmaxX;
+        centroids[cAt + 4] = cmaxY;
+        centroids[cAt + 5] = cmaxZ;
+    }
+
+    /**
+     * Splits items [lo, hi), whose box is at {@code boxAt} in {@code box} and centroid bounds at
+     * {@code cAt} in {@code centroids}, by the best SAH split: partitions the range, writes the
+     * halves' boxes to slot {@code slot} of {@link #childBox} and their centroid bounds to depth
+     * {@code depth} of the scratch's centroids, and returns the middle; returns −1 when the range
+     * is a leaf. The halves' boxes are the unions of their bins, and their centroid bounds are
+     * gathered by the partition, so no range is read twice for them.
+     */
+    private int split(int lo, int hi, Scratch sc, double[] box, int boxAt, double[] centroids, int cAt, int slot, int depth) {
+        int n = hi - lo;
+        double minX = box[boxAt], minY = box[boxAt + 1], minZ = box[boxAt + 2];
+        double maxX = box[boxAt + 3], maxY = box[boxAt + 4], maxZ = box[boxAt + 5];
+        double[] bounds = this.bounds;
         if (n <= 1) return -1;
         double bestCost = Double.POSITIVE_INFINITY;
         int bestAxis = -1, bestBin = -1;
@@ -249,29 +266,29 @@ final class BvhBuilder {
         int[] used = sc.used;
         double[] scale = sc.scale;
         for (int axis = 0; axis < 3; axis++) {
-            double extent = cmax[axis] - cmin[axis];
+            double extent = centroids[cAt + 3 + axis] - centroids[cAt + axis];
             scale[axis] = extent > 0 ? BINS / extent : 0;
         }
         // One pass bins every item on all three axes at once, so the item data is read once.
         double kx = scale[0], ky = scale[1], kz = scale[2];
-        double mx = cmin[0], my = cmin[1], mz = cmin[2];
+        double mx = centroids[cAt], my = centroids[cAt + 1], mz = centroids[cAt + 2];
         int maskX = 0, maskY = 0, maskZ = 0;
         for (int i = lo; i < hi; i++) {
-            int c = 3 * i;
+            int c = 6 * i;
             if (kx != 0) {
-                int bin = bin(centroid[c], mx, kx);
+                int bin = bin(0.5 * (bounds[c] + bounds[c + 3]), mx, kx);
                 maskX |= 1 << bin;
                 binCount[bin]++;
                 grow(binBox, bin, bounds, i);
             }
             if (ky != 0) {
-                int bin = bin(centroid[c + 1], my, ky);
+                int bin = bin(0.5 * (bounds[c + 1] + bounds[c + 4]), my, ky);
                 maskY |= 1 << bin;
                 binCount[BINS + bin]++;
                 grow(binBox, BINS + bin, bounds, i);
             }
             if (kz != 0) {
-                int bin = bin(centroid[c + 2], mz, kz);
+                int bin = bin(0.5 * (bounds[c + 2] + bounds[c + 5]), mz, kz);
                 maskZ |= 1 << bin;
                 binCount[2 * BINS + bin]++;
                 grow(binBox, 2 * BINS + bin, bounds, i);
@@ -315,30 +332,87 @@ final class BvhBuilder {
                     bestBin = b;
                 }
             }
-            for (int m = mask; m != 0; m &= m - 1) {
-                int b = base + Integer.numberOfTrailingZeros(m);
-                binCount[b] = 0;
-                resetBox(binBox, b);
-            }
         }
         double parentArea = area(minX, minY, minZ, maxX, maxY, maxZ);
+        if (sc.centroids.length < 12 * (depth + 1)) sc.centroids = java.util.Arrays.copyOf(sc.centroids, 24 * (depth + 1));
+        double[] halves = sc.centroids;
+        int halvesAt = 12 * depth;
         if (bestAxis < 0) {
             // All centroids coincide: split the range in the middle if it is too big for a leaf.
-            return n <= MAX_LEAF ? -1 : lo + n / 2;
+            emptyBins(sc);
+            if (n <= MAX_LEAF) return -1;
+            int mid = lo + n / 2;
+            measure(lo, mid, childBox, 12 * slot, halves, halvesAt);
+            measure(mid, hi, childBox, 12 * slot + 6, halves, halvesAt + 6);
+            return mid;
         }
         double splitCost = TRAVERSAL_COST + INTERSECTION_COST * bestCost / parentArea;
-        if (n <= MAX_LEAF && (splitCost >= INTERSECTION_COST * n || !(parentArea > 0))) return -1;
-        double k = scale[bestAxis];
+        if (n <= MAX_LEAF && (splitCost >= INTERSECTION_COST * n || !(parentArea > 0))) {
+            emptyBins(sc);
+            return -1;
+        }
+        // The halves' boxes: the unions of the chosen axis's bins on either side of the split.
+        int base = bestAxis * BINS;
+        resetAcc(acc);
+        for (int m = sc.used[bestAxis] & (2 << bestBin) - 1; m != 0; m &= m - 1) include(acc, binBox, base + Integer.numberOfTrailingZeros(m));
+        System.arraycopy(acc, 0, childBox, 12 * slot, 6);
+        resetAcc(acc);
+        for (int m = sc.used[bestAxis] & -(2 << bestBin); m != 0; m &= m - 1) include(acc, binBox, base + Integer.numberOfTrailingZeros(m));
+        System.arraycopy(acc, 0, childBox, 12 * slot + 6, 6);
+        emptyBins(sc);
+        // The partition gathers the centroid bounds of each half as it places the items.
+        double lminX = Double.POSITIVE_INFINITY, lminY = Double.POSITIVE_INFINITY, lminZ = Double.POSITIVE_INFINITY;
+        double lmaxX = Double.NEGATIVE_INFINITY, lmaxY = Double.NEGATIVE_INFINITY, lmaxZ = Double.NEGATIVE_INFINITY;
+        double rminX = Double.POSITIVE_INFINITY, rminY = Double.POSITIVE_INFINITY, rminZ = Double.POSITIVE_INFINITY;
+        double rmaxX = Double.NEGATIVE_INFINITY, rmaxY = Double.NEGATIVE_INFINITY, rmaxZ = Double.NEGATIVE_INFINITY;
+        double k = scale[bestAxis], min = centroids[cAt + bestAxis];
         int i = lo, j = hi - 1;
         while (i <= j) {
-            if (bin(centroid[3 * i + bestAxis], cmin[bestAxis], k) <= bestBin) {
+            int c = 6 * i;
+            double x = 0.5 * (bounds[c] + bounds[c + 3]), y = 0.5 * (bounds[c + 1] + bounds[c + 4]), z = 0.5 * (bounds[c + 2] + bounds[c + 5]);
+            if (bin(bestAxis == 0 ? x : bestAxis == 1 ? y : z, min, k) <= bestBin) {
+                if (x < lminX) lminX = x;
+                if (x > lmaxX) lmaxX = x;
+                if (y < lminY) lminY = y;
+                if (y > lmaxY) lmaxY = y;
+                if (z < lminZ) lminZ = z;
+                if (z > lmaxZ) lmaxZ = z;
                 i++;
             } else {
+                if (x < rminX) rminX = x;
+                if (x > rmaxX) rmaxX = x;
+                if (y < rminY) rminY = y;
+                if (y > rmaxY) rmaxY = y;
+                if (z < rminZ) rminZ = z;
+                if (z > rmaxZ) rmaxZ = z;
                 swap(i, j);
                 j--;
             }
         }
+        halves[halvesAt] = lminX;
+        halves[halvesAt + 1] = lminY;
+        halves[halvesAt + 2] = lminZ;
+        halves[halvesAt + 3] = lmaxX;
+        halves[halvesAt + 4] = lmaxY;
+        halves[halvesAt + 5] = lmaxZ;
+        halves[halvesAt + 6] = rminX;
+        halves[halvesAt + 7] = rminY;
+        halves[halvesAt + 8] = rminZ;
+        halves[halvesAt + 9] = rmaxX;
+        halves[halvesAt + 10] = rmaxY;
+        halves[halvesAt + 11] = rmaxZ;
         return i;
+    }
+
+    /** Empties the bins the last split used, so the next split finds them empty. */
+    private static void emptyBins(Scratch sc) {
+        for (int axis = 0; axis < 3; axis++) {
+            for (int m = sc.used[axis]; m != 0; m &= m - 1) {
+                int b = axis * BINS + Integer.numberOfTrailingZeros(m);
+                sc.binCount[b] = 0;
+                resetBox(sc.binBox, b);
+            }
+        }
     }
 
     private static int bin(double c, double min, double k) {
@@ -360,14 +434,20 @@ final class BvhBuilder {
         }
     }
 
+    /**
+     * Comparisons rather than Math.min and Math.max (which also order −0 and NaN, at a longer
+     * instruction sequence): item bounds are finite, a bin's box only feeds areas, which −0 and
+     * +0 leave alike, and this runs for every item on three axes at every level of the tree.
+     */
     private static void grow(double[] boxes, int b, double[] items, int item) {
         int o = 6 * b, k = 6 * item;
-        boxes[o] = Math.min(boxes[o], items[k]);
-        boxes[o + 1] = Math.min(boxes[o + 1], items[k + 1]);
-        boxes[o + 2] = Math.min(boxes[o + 2], items[k + 2]);
-        boxes[o + 3] = Math.max(boxes[o + 3], items[k + 3]);
-        boxes[o + 4] = Math.max(boxes[o + 4], items[k + 4]);
-        boxes[o + 5] = Math.max(boxes[o + 5], items[k + 5]);
+        double v;
+        if ((v = items[k]) < boxes[o]) boxes[o] = v;
+        if ((v = items[k + 1]) < boxes[o + 1]) boxes[o + 1] = v;
+        if ((v = items[k + 2]) < boxes[o + 2]) boxes[o + 2] = v;
+        if ((v = items[k + 3]) > boxes[o + 3]) boxes[o + 3] = v;
+        if ((v = items[k + 4]) > boxes[o + 4]) boxes[o + 4] = v;
+        if ((v = items[k + 5]) > boxes[o + 5]) boxes[o + 5] = v;
     }
 
     private static void include(double[] acc, double[] boxes, int b) {
