@@ -114,7 +114,7 @@ final class BvhBuilder {
         int[] index = new int[slots];
         int count = 0;
         for (int s = 0; s < slots; s++) if (inner[s]) index[s] = count++;
-        double[] box = new double[12 * count];
+        double[] box = new double[Bvh.NODE * count];
         int[] links = new int[2 * count];
         int[] level = new int[count];
         level[0] = 1;
@@ -122,7 +122,8 @@ final class BvhBuilder {
         for (int s = 0; s < slots; s++) {
             if (!inner[s]) continue;
             int k = index[s];
-            System.arraycopy(childBox, 12 * s, box, 12 * k, 12);
+            Bvh.putChild(box, k, 0, childBox, 12 * s);
+            Bvh.putChild(box, k, 1, childBox, 12 * s + 6);
             for (int c = 0; c < 2; c++) {
                 int child = children[2 * s + c];
                 if (Bvh.isLeaf(child)) {

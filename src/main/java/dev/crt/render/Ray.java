@@ -46,15 +46,11 @@ final class Ray {
         t1 = (b[k + 5 - nearZ] - oz) * iz;
         if (t0 > near) near = t0;
         if (t1 < far) far = t1;
-        // The slab distances are rounded (a subtraction and a product each): a line through a
-        // box's edge or face, such as a ray through the edge two triangles of a mesh share, must
-        // not fall outside both boxes by rounding, so the test is widened by a bound of that
-        // error (Ize, "Robust BVH Ray Traversal", JCGT 2013). An infinite far end gives NaN: a miss.
-        return near <= far + SLAB_ERROR * (Math.abs(near) + Math.abs(far)) ? near : Double.POSITIVE_INFINITY;
+        // Widened by the bound of the slab distances' rounding error, as in BvhWalker. An
+        // infinite far end gives NaN: a miss.
+        double e = BvhWalker.SLAB_ERROR;
+        return near <= far + e * (Math.abs(near) + Math.abs(far)) ? near : Double.POSITIVE_INFINITY;
     }
-
-    /** 2γ₃ (γₙ = nε / (1 − nε), ε = 2⁻⁵³): twice the relative error of a slab distance. */
-    private static final double SLAB_ERROR = 2 * 3 * 0x1p-53 / (1 - 3 * 0x1p-53);
 
     /** Whether the line passes through the box at {@code k} in {@code b} for some tMin ≤ t ≤ tMax. */
     boolean enters(double[] b, int k, double tMin, double tMax) {

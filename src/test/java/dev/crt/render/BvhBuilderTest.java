@@ -5,7 +5,10 @@ import static org.assertj.core.api.Assertions.assertThat;
 import java.util.SplittableRandom;
 import org.junit.jupiter.api.Test;
 
-/** The hierarchy's invariants: every item in exactly one leaf, every box containing what is below it. */
+/**
+ * The hierarchy's invariants: every item in exactly one leaf, every box the exact union of what is
+ * below it (the builder takes the halves' boxes from its bins, not from a pass over the items).
+ */
 class BvhBuilderTest {
     private static double[] randomBoxes(int n, long seed) {
         SplittableRandom r = new SplittableRandom(seed);
@@ -38,31 +41,49 @@ class BvhBuilderTest {
      * {@code box}; returns the leaves below.
      */
     private static int walk(Bvh bvh, int node, double[] boxes, int[] order, int[] seen, double[] box) {
+        double[] union = {Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY,
+                Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY};
         if (Bvh.isLeaf(node)) {
             assertThat(Bvh.leafCount(node)).isBetween(1, BvhBuilder.MAX_LEAF);
             for (int k = Bvh.leafFirst(node); k < Bvh.leafFirst(node) + Bvh.leafCount(node); k++) {
                 int item = order[k];
                 seen[item]++;
-                for (int a = 0; a < 3; a++) {
-                    assertThat(boxes[6 * item + a]).isGreaterThanOrEqualTo(box[a]);
-                    assertThat(boxes[6 * item + 3 + a]).isLessThanOrEqualTo(box[3 + a]);
-                }
+                include(union, boxes, 6 * item);
             }
+            assertThat(union).as("leaf box").containsExactly(plusZero(box));
             return 1;
         }
         int leaves = 0;
+        for (int c = 0; c < 2; c++) include(union, child(bvh, node, c), 0);
+        assertThat(union).as("node box").containsExactly(plusZero(box));
         for (int c = 0; c < 2; c++) {
-            double[] child = java.util.Arrays.copyOfRange(bvh.box, 12 * node + 6 * c, 12 * node + 6 * c + 6);
-            for (int a = 0; a < 3; a++) {
-                assertThat(child[a]).isGreaterThanOrEqualTo(box[a]);
-                assertThat(child[3 + a]).isLessThanOrEqualTo(box[3 + a]);
-            }
+            double[] child = child(bvh, node, c);
             int next = bvh.children[2 * node + c];
             // Depth-first order: inner children come after their parent.
             if (!Bvh.isLeaf(next)) assertThat(next).isGreaterThan(node);
             leaves += walk(bvh, next, boxes, order, seen, child);
         }
         return leaves;
+    }
+
+    private static void include(double[] union, double[] boxes, int k) {
+        for (int a = 0; a < 3; a++) {
+            union[a] = Math.min(union[a], boxes[k + a] + 0.0);
+            union[3 + a] = Math.max(union[3 + a], boxes[k + 3 + a] + 0.0);
+        }
+    }
+
+    private static double[] child(Bvh bvh, int node, int c) {
+        double[] child = new double[6];
+        for (int a = 0; a < 6; a++) child[a] = bvh.bound(node, c, a);
+        return child;
+    }
+
+    /** The box with −0 as +0, which act alike in every use of a box. */
+    private static double[] plusZero(double[] box) {
+        double[] b = box.clone();
+        for (int a = 0; a < 6; a++) b[a] += 0.0;
+        return b;
     }
 
     @Test
