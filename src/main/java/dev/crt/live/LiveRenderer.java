@@ -576,22 +576,28 @@ public final class LiveRenderer implements AutoCloseable {
         glUniform3f(glGetUniformLocation(p, name), (float) v.x(), (float) v.y(), (float) v.z());
     }
 
-    /** The colour image as packed 0xRRGGBB ints, rows top to bottom. */
+    /** The colour image as packed 0xFFRRGGBB ints, rows top to bottom. */
     public int[] readColour() {
-        ByteBuffer b = BufferUtils.createByteBuffer(width * height * 4);
+        int[] out = new int[width * height];
+        readColour(width, height, out);
+        return out;
+    }
+
+    /**
+     * The top-left {@code w × h} pixels of the colour image into {@code out} as 0xFFRRGGBB ints
+     * (the alpha drawn is 1), rows top to bottom: read as BGRA words, which are those ints on
+     * a little-endian machine's memory order, so no pixel is converted in Java.
+     */
+    public void readColour(int w, int h, int[] out) {
+        IntBuffer b = BufferUtils.createIntBuffer(w * h);
         glBindFramebuffer(GL_FRAMEBUFFER, colourFramebuffer);
         glReadBuffer(GL_COLOR_ATTACHMENT0);
-        glPixelStorei(GL_PACK_ALIGNMENT, 1);
-        glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, b);
-        int[] out = new int[width * height];
-        for (int row = 0; row < height; row++) {
-            int src = (height - 1 - row) * width * 4;
-            for (int i = 0; i < width; i++) {
-                int k = src + 4 * i;
-                out[row * width + i] = (b.get(k) & 255) << 16 | (b.get(k + 1) & 255) << 8 | (b.get(k + 2) & 255);
-            }
+        glPixelStorei(GL_PACK_ALIGNMENT, 4);
+        glReadPixels(0, height - h, w, h, GL_BGRA, GL_UNSIGNED_INT_8_8_8_8_REV, b);
+        for (int row = 0; row < h; row++) {
+            b.position((h - 1 - row) * w);
+            b.get(out, row * w, w);
         }
-        return out;
     }
 
     /** The entity index seen at each pixel (−1 for background), rows top to bottom. */

@@ -63,6 +63,7 @@ final class LiveDock extends JPanel implements StudioModel.Listener {
     private transient ScriptDocument shown;
     private transient Scene scene;
     private volatile long followNanos = -1;
+    private volatile long firstFrameNanos = -1;
     /** Compiles the shown script at the studio's time t when t is not 0 (the background compile's time). */
     private final transient SceneAtTime atTime = new SceneAtTime(this::compiledAt);
 
@@ -116,8 +117,11 @@ final class LiveDock extends JPanel implements StudioModel.Listener {
 
     Action copyCameraAction() { return copyCamera; }
 
-    /** From a compile's result reaching the studio to the view's frame of it being drawn, or −1. */
+    /** From a compile's result reaching the studio to the view's full-size frame of it being drawn, or −1. */
     long lastFollowNanos() { return followNanos; }
+
+    /** From a compile's result reaching the studio to the view's first frame of it (the coarse one) being drawn, or −1. */
+    long lastFirstFrameNanos() { return firstFrameNanos; }
 
     /** Opens OpenGL on a thread of its own; the view appears when it is ready. */
     void start() {
@@ -252,6 +256,8 @@ final class LiveDock extends JPanel implements StudioModel.Listener {
             try {
                 v.awaitIdle();
                 followNanos = System.nanoTime() - since;
+                long first = v.firstFrameNanos();
+                firstFrameNanos = first > 0 ? first - since : -1;
             } catch (InterruptedException e) {
                 Thread.currentThread().interrupt();
             } catch (java.util.concurrent.ExecutionException e) {
