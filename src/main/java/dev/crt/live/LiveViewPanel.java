@@ -88,7 +88,6 @@ public final class LiveViewPanel extends JPanel implements AutoCloseable {
     /** The frame's picture where the screen is, and the frame it holds; used on the event dispatch thread. */
     private transient VolatileImage onScreen;
     private transient Frame onScreenFrame;
-    private volatile long lastPaintNanos;
 
     private transient Point pressed;
     private transient Viewport dragged;
@@ -109,7 +108,7 @@ public final class LiveViewPanel extends JPanel implements AutoCloseable {
     /** Set by {@link #setScene} until the next frame request takes it: that frame is drawn coarse first. */
     private boolean coarseNext;
     /** Counts the scenes set; the GL thread notes when the first frame of the newest was shown. */
-    private long sceneGeneration;
+    private volatile long sceneGeneration;
     private volatile long shownGeneration;
     private volatile long firstFrameNanos;
 
@@ -527,9 +526,7 @@ public final class LiveViewPanel extends JPanel implements AutoCloseable {
         }
         Frame f = frame;
         if (f == null) return;
-        long start = System.nanoTime();
         drawFrame(g2, f);
-        lastPaintNanos = System.nanoTime() - start;
         Traced t = traced;
         Rectangle freeRect = f.viewports().get(Viewport.FREE);
         if (t != null && freeRect != null && t.camera().equals(free) && t.scene() == scene) {
@@ -582,9 +579,6 @@ public final class LiveViewPanel extends JPanel implements AutoCloseable {
         }
         g.drawImage(f.image(), 0, 0, w, h, null);
     }
-
-    /** How long the last paint took to put the frame's picture on the screen (for the speed figures). */
-    public long lastPaintNanos() { return lastPaintNanos; }
 
     /** The axis gizmo: +x red, +y green, +z blue, as the view sees them. */
     private static void gizmo(Graphics2D g, ViewCamera view, int cx, int cy) {

@@ -244,10 +244,11 @@ final class LiveDock extends JPanel implements StudioModel.Listener {
         shown = d;
         scene = next;
         if (view == null) return;
-        view.setScene(next);
+        // Camera and selection first: setScene draws at once, with them.
         // Another script brings its own camera; a recompile of the same one keeps the view's.
         if (otherDocument) view.setFreeCamera(FreeCamera.of(next.settings().camera()));
         view.select(model.selectedDocument() == d ? model.selectedIndex() : -1);
+        view.setScene(next);
         double t = model.time();
         status.setText(next.entities().size() + " entities" + (t == 0 ? "" : " at t = " + fmt(t)));
         if (!view.isShowing()) return;
