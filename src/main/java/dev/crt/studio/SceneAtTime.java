@@ -91,9 +91,6 @@ final class SceneAtTime {
         }
     }
 
-    /** How many scenes are kept for the current text (for tests). */
-    int keptCount() { return kept.size(); }
-
     void close() {
         latest.set(null);
         worker.shutdownNow();
