@@ -16,12 +16,23 @@ import dev.crt.scene.Camera;
  * world normal and offset in the first), local box min and max (a cone: its length, then 0),
  * (colour, diffuse), (specular, shininess, transparency, reflectivity), (emission, 0).
  * Parameters: a cone's (r0, r1, capped), a torus's (major, minor, 0), zeros otherwise.
+ *
+ * <p>A mesh leaf: (MESH, smooth with vertex normals, vertex base, index base), the three matrix
+ * rows, (triangles, closed, vertices, 0), a zero texel, the material. Its vertices (and then its
+ * normals) are texels of the mesh vertex buffer from the vertex base, its triangles three indices
+ * each in the index buffer from the index base: the buffers hold {@link #meshes} one after the
+ * other. A top-level mesh is rasterised (one draw per {@link #meshInstances} entry, its triangle
+ * numbers kept per pixel for shading); a mesh inside CSG, and any mesh in shadow rays, is ray-cast
+ * triangle by triangle in the shader, so only meshes of at most {@link #MESH_CAST_LIMIT} triangles
+ * are allowed in CSG and only those cast shadows.
  */
 public final class GpuScene {
     public static final int HEADER_TEXELS = 3;
     public static final int LEAF_TEXELS = 9;
     /** Primitive kinds as the shader reads them. */
-    public static final int SPHERE = 0, BOX = 1, PLANE = 2, EMPTY = 3, CONE = 4, TORUS = 5;
+    public static final int SPHERE = 0, BOX = 1, PLANE = 2, EMPTY = 3, CONE = 4, TORUS = 5, MESH = 6;
+    /** Triangles up to which a mesh is ray-cast in the shader (inside CSG, and for shadow rays). */
+    public static final int MESH_CAST_LIMIT = 256;
     /** Program opcodes as the shader reads them. */
     public static final int OP_LEAF = 0, OP_UNION = 1, OP_INTERSECTION = 2, OP_DIFFERENCE = 3;
     /** The shader's limits: primitives per top-level entity (a 32-bit inside mask) and lights. */
@@ -59,10 +70,19 @@ public final class GpuScene {
      * only for scenes that have them (llvmpipe pays for every branch on every pixel).
      */
     final int kinds;
+    /** The distinct meshes, in the order their vertices and indices lie in the mesh buffers. */
+    final java.util.List<dev.crt.scene.MeshData> meshes;
+    /** Texels of vertex data (positions, then normals when smooth) and indices of all {@link #meshes}. */
+    final int meshVertexTexels, meshIndexCount;
+    /** Top-level meshes: per instance (entity header offset, leaf address, vertex base, index base, triangles). */
+    final int[] meshInstances;
+    /** Per mesh instance its mesh-to-world matrix, three rows of four. */
+    final float[] meshMatrices;
 
     GpuScene(float[] data, int texels, int[] entityOffset, Aabb[] entityBounds, int[] boundedOffsets,
             float[] boundedBoxes, int boundedPrimitives, int[] unboundedOffsets, float[] lights, int lightCount, Background background,
-            double gamma, Camera camera, Aabb bounds, int kinds) {
+            double gamma, Camera camera, Aabb bounds, int kinds, java.util.List<dev.crt.scene.MeshData> meshes,
+            int meshVertexTexels, int meshIndexCount, int[] meshInstances, float[] meshMatrices) {
         this.data = data;
         this.texels = texels;
         this.entityOffset = entityOffset;
@@ -78,7 +98,15 @@ public final class GpuScene {
         this.camera = camera;
         this.bounds = bounds;
         this.kinds = kinds;
+        this.meshes = java.util.List.copyOf(meshes);
+        this.meshVertexTexels = meshVertexTexels;
+        this.meshIndexCount = meshIndexCount;
+        this.meshInstances = meshInstances;
+        this.meshMatrices = meshMatrices;
     }
+
+    /** Floats per mesh instance in {@link #meshInstances}. */
+    static final int MESH_INSTANCE_INTS = 5;
 
     /** Number of top-level entities. */
     public int entityCount() { return entityOffset.length; }

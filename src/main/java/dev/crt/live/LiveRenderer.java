@@ -45,9 +45,12 @@ public final class LiveRenderer implements AutoCloseable {
     /** Proxy boxes of one-primitive entities (cubeVao) and of CSG entities (csgVao). */
     private int primitiveInstances, csgInstances;
     private final int sceneBuffer, sceneTexture, directoryBuffer, directoryTexture;
+    /** The meshes' vertices and triangles: vertex and index buffers of the rasterised draws and texture buffers of the shaders. */
+    private final int meshVao, meshVertexBuffer, meshIndexBuffer, meshVertexTexture, meshIndexTexture;
+    private java.util.List<dev.crt.scene.MeshData> uploadedMeshes = java.util.List.of();
     private int panoramaTexture;
     /** The geometry pass's framebuffer (id, distance, primitive address, depth) and the shaded colour's. */
-    private int framebuffer, colourFramebuffer, colourTexture, idTexture, depthTexture, leafTexture, depthBuffer;
+    private int framebuffer, colourFramebuffer, colourTexture, idTexture, depthTexture, leafTexture, faceTexture, depthBuffer;
     private int width, height;
     private GpuScene scene;
     private float[] uploaded = new float[0];
@@ -91,6 +94,24 @@ public final class LiveRenderer implements AutoCloseable {
         directoryBuffer = glGenBuffers();
         directoryTexture = glGenTextures();
         panoramaTexture = glGenTextures();
+
+        meshVao = glGenVertexArrays();
+        glBindVertexArray(meshVao);
+        meshVertexBuffer = glGenBuffers();
+        glBindBuffer(GL_ARRAY_BUFFER, meshVertexBuffer);
+        glBufferData(GL_ARRAY_BUFFER, 16, GL_STATIC_DRAW);
+        glEnableVertexAttribArray(0);
+        glVertexAttribPointer(0, 4, GL_FLOAT, false, 16, 0);
+        meshIndexBuffer = glGenBuffers();
+        glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, meshIndexBuffer);
+        glBufferData(GL_ELEMENT_ARRAY_BUFFER, 4, GL_STATIC_DRAW);
+        glBindVertexArray(0);
+        meshVertexTexture = glGenTextures();
+        glBindTexture(GL_TEXTURE_BUFFER, meshVertexTexture);
+        glTexBuffer(GL_TEXTURE_BUFFER, GL_RGBA32F, meshVertexBuffer);
+        meshIndexTexture = glGenTextures();
+        glBindTexture(GL_TEXTURE_BUFFER, meshIndexTexture);
+        glTexBuffer(GL_TEXTURE_BUFFER, GL_R32I, meshIndexBuffer);
         check("creating the renderer");
     }
 
@@ -98,7 +119,9 @@ public final class LiveRenderer implements AutoCloseable {
     private String header(int backgroundKind) {
         return "#version 330 core\n#define BACKGROUND_KIND " + backgroundKind + "\n"
                 + ((scene.kinds & 1 << GpuScene.CONE) != 0 ? "#define HAS_CONE\n" : "")
-                + ((scene.kinds & 1 << GpuScene.TORUS) != 0 ? "#define HAS_TORUS\n" : "");
+                + ((scene.kinds & 1 << GpuScene.TORUS) != 0 ? "#define HAS_TORUS\n" : "")
+                + ((scene.kinds & 1 << GpuScene.MESH) != 0
+                        ? "#define HAS_MESH\n#define MESH_CAST_LIMIT " + GpuScene.MESH_CAST_LIMIT + "\n" : "");
     }
 
     /** The geometry program for one-primitive entities ({@code primitives}) or for CSG entities. */
@@ -106,6 +129,12 @@ public final class LiveRenderer implements AutoCloseable {
         String defines = header(0) + (primitives ? "#define PRIMITIVES\n" : "");
         return geometryPrograms.computeIfAbsent(defines,
                 d -> program(resource("entity.vert"), d + common + resource("entity.frag")));
+    }
+
+    private int meshProgram() {
+        String defines = header(0);
+        return geometryPrograms.computeIfAbsent("mesh\n" + defines,
+                d -> program(resource("mesh.vert"), defines + common + resource("mesh.frag")));
     }
 
     private int shadeProgram(int kind, boolean background, boolean grid, boolean shadows) {
@@ -205,6 +234,11 @@ public final class LiveRenderer implements AutoCloseable {
         glBufferData(GL_ARRAY_BUFFER, instances(new float[6 * next.unboundedOffsets.length], next.unboundedOffsets,
                 0, next.unboundedOffsets.length), GL_DYNAMIC_DRAW);
 
+        if (!sameMeshes(next.meshes, uploadedMeshes)) {
+            uploadMeshes(next);
+            uploadedMeshes = next.meshes;
+        }
+
         if (next.background instanceof PanoramaBackground p && p.image() != uploadedPanorama) {
             uploadPanorama(p.image(), next.gamma);
             uploadedPanorama = p.image();
@@ -214,6 +248,37 @@ public final class LiveRenderer implements AutoCloseable {
     }
 
     private long lastUploadFloats;
+
+    private static boolean sameMeshes(java.util.List<dev.crt.scene.MeshData> a, java.util.List<dev.crt.scene.MeshData> b) {
+        if (a.size() != b.size()) return false;
+        for (int i = 0; i < a.size(); i++) if (a.get(i) != b.get(i)) return false;
+        return true;
+    }
+
+    /** Sends every mesh of {@code next} in the layout the converter gave: vertex texels (positions, then normals), indices. */
+    private void uploadMeshes(GpuScene next) {
+        FloatBuffer vertices = BufferUtils.createFloatBuffer(4 * Math.max(1, next.meshVertexTexels));
+        IntBuffer indices = BufferUtils.createIntBuffer(Math.max(1, next.meshIndexCount));
+        for (dev.crt.scene.MeshData m : next.meshes) {
+            putTexels(vertices, m.positions());
+            if (m.normals() != null) putTexels(vertices, m.normals());
+            indices.put(m.triangles());
+        }
+        vertices.position(0).limit(vertices.capacity());
+        indices.position(0).limit(indices.capacity());
+        glBindBuffer(GL_ARRAY_BUFFER, meshVertexBuffer);
+        glBufferData(GL_ARRAY_BUFFER, vertices, GL_STATIC_DRAW);
+        glBindBuffer(GL_ARRAY_BUFFER, 0);
+        glBindVertexArray(meshVao);
+        glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, meshIndexBuffer);
+        glBufferData(GL_ELEMENT_ARRAY_BUFFER, indices, GL_STATIC_DRAW);
+        glBindVertexArray(0);
+        lastUploadFloats += 4L * next.meshVertexTexels + next.meshIndexCount;
+    }
+
+    private static void putTexels(FloatBuffer out, double[] xyz) {
+        for (int i = 0; i < xyz.length; i += 3) out.put((float) xyz[i]).put((float) xyz[i + 1]).put((float) xyz[i + 2]).put(0f);
+    }
 
     /** How many floats the last {@link #setScene} sent to the GPU (for tests and benchmarks). */
     public long lastUploadFloats() { return lastUploadFloats; }
@@ -262,11 +327,12 @@ public final class LiveRenderer implements AutoCloseable {
         idTexture = attachment(GL_R32I, GL_RED_INTEGER, GL_INT, GL_COLOR_ATTACHMENT0);
         depthTexture = attachment(GL_R32F, GL_RED, GL_FLOAT, GL_COLOR_ATTACHMENT1);
         leafTexture = attachment(GL_R32I, GL_RED_INTEGER, GL_INT, GL_COLOR_ATTACHMENT2);
+        faceTexture = attachment(GL_R32I, GL_RED_INTEGER, GL_INT, GL_COLOR_ATTACHMENT3);
         depthBuffer = glGenRenderbuffers();
         glBindRenderbuffer(GL_RENDERBUFFER, depthBuffer);
         glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH32F_STENCIL8, w, h);
         glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER, depthBuffer);
-        glDrawBuffers(new int[] {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2});
+        glDrawBuffers(new int[] {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2, GL_COLOR_ATTACHMENT3});
         complete();
         colourFramebuffer = glGenFramebuffers();
         glBindFramebuffer(GL_FRAMEBUFFER, colourFramebuffer);
@@ -287,7 +353,7 @@ public final class LiveRenderer implements AutoCloseable {
     private void deleteFramebuffers() {
         if (framebuffer == 0) return;
         glDeleteFramebuffers(new int[] {framebuffer, colourFramebuffer});
-        glDeleteTextures(new int[] {colourTexture, idTexture, depthTexture, leafTexture});
+        glDeleteTextures(new int[] {colourTexture, idTexture, depthTexture, leafTexture, faceTexture});
         glDeleteRenderbuffers(depthBuffer);
         framebuffer = 0;
     }
@@ -364,6 +430,24 @@ public final class LiveRenderer implements AutoCloseable {
             glBindVertexArray(fullVao);
             glDrawArraysInstanced(GL_TRIANGLES, 0, 3, scene.unboundedOffsets.length);
         }
+        int meshes = scene.meshInstances.length / GpuScene.MESH_INSTANCE_INTS;
+        if (meshes > 0) {
+            p = meshProgram();
+            useGeometryProgram(p, view, x, glY, w, h, overlay, false);
+            int rows = glGetUniformLocation(p, "meshRows"), entity = glGetUniformLocation(p, "entityIndex");
+            int leaf = glGetUniformLocation(p, "meshLeaf");
+            glBindVertexArray(meshVao);
+            float[] m = new float[12];
+            for (int i = 0; i < meshes; i++) {
+                int at = GpuScene.MESH_INSTANCE_INTS * i;
+                System.arraycopy(scene.meshMatrices, 12 * i, m, 0, 12);
+                glUniform4fv(rows, m);
+                glUniform1i(entity, (int) scene.data[4 * scene.meshInstances[at] + 2]);
+                glUniform1i(leaf, scene.meshInstances[at + 1]);
+                glDrawElementsBaseVertex(GL_TRIANGLES, 3 * scene.meshInstances[at + 4], GL_UNSIGNED_INT,
+                        4L * scene.meshInstances[at + 3], scene.meshInstances[at + 2]);
+            }
+        }
         glDisable(GL_DEPTH_CLAMP);
         glDisable(GL_DEPTH_TEST);
 
@@ -387,6 +471,7 @@ public final class LiveRenderer implements AutoCloseable {
         bind(p, "ids", 3, GL_TEXTURE_2D, idTexture);
         bind(p, "depths", 4, GL_TEXTURE_2D, depthTexture);
         bind(p, "leaves", 5, GL_TEXTURE_2D, leafTexture);
+        bind(p, "faces", 6, GL_TEXTURE_2D, faceTexture);
         bind(p, "directory", 2, GL_TEXTURE_BUFFER, directoryTexture);
         glActiveTexture(GL_TEXTURE0);
         glUniform1i(glGetUniformLocation(p, "entityCount"), scene.entityOffset.length);
@@ -428,6 +513,10 @@ public final class LiveRenderer implements AutoCloseable {
 
     private void sceneTexture(int p) {
         bind(p, "scene", 1, GL_TEXTURE_BUFFER, sceneTexture);
+        if ((scene.kinds & 1 << GpuScene.MESH) != 0) {
+            bind(p, "meshVertices", 7, GL_TEXTURE_BUFFER, meshVertexTexture);
+            bind(p, "meshIndices", 8, GL_TEXTURE_BUFFER, meshIndexTexture);
+        }
     }
 
     private static void bind(int p, String name, int unit, int target, int texture) {
@@ -487,22 +576,28 @@ public final class LiveRenderer implements AutoCloseable {
         glUniform3f(glGetUniformLocation(p, name), (float) v.x(), (float) v.y(), (float) v.z());
     }
 
-    /** The colour image as packed 0xRRGGBB ints, rows top to bottom. */
+    /** The colour image as packed 0xFFRRGGBB ints, rows top to bottom. */
     public int[] readColour() {
-        ByteBuffer b = BufferUtils.createByteBuffer(width * height * 4);
+        int[] out = new int[width * height];
+        readColour(width, height, out);
+        return out;
+    }
+
+    /**
+     * The top-left {@code w × h} pixels of the colour image into {@code out} as 0xFFRRGGBB ints
+     * (the alpha drawn is 1), rows top to bottom: read as BGRA words, which are those ints on
+     * a little-endian machine's memory order, so no pixel is converted in Java.
+     */
+    public void readColour(int w, int h, int[] out) {
+        IntBuffer b = BufferUtils.createIntBuffer(w * h);
         glBindFramebuffer(GL_FRAMEBUFFER, colourFramebuffer);
         glReadBuffer(GL_COLOR_ATTACHMENT0);
-        glPixelStorei(GL_PACK_ALIGNMENT, 1);
-        glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, b);
-        int[] out = new int[width * height];
-        for (int row = 0; row < height; row++) {
-            int src = (height - 1 - row) * width * 4;
-            for (int i = 0; i < width; i++) {
-                int k = src + 4 * i;
-                out[row * width + i] = (b.get(k) & 255) << 16 | (b.get(k + 1) & 255) << 8 | (b.get(k + 2) & 255);
-            }
+        glPixelStorei(GL_PACK_ALIGNMENT, 4);
+        glReadPixels(0, height - h, w, h, GL_BGRA, GL_UNSIGNED_INT_8_8_8_8_REV, b);
+        for (int row = 0; row < h; row++) {
+            b.position((h - 1 - row) * w);
+            b.get(out, row * w, w);
         }
-        return out;
     }
 
     /** The entity index seen at each pixel (−1 for background), rows top to bottom. */
@@ -549,9 +644,10 @@ public final class LiveRenderer implements AutoCloseable {
     @Override
     public void close() {
         deleteFramebuffers();
-        glDeleteTextures(new int[] {sceneTexture, directoryTexture, panoramaTexture});
-        glDeleteBuffers(new int[] {sceneBuffer, directoryBuffer, cubeVbo, instanceVbo, csgInstanceVbo, fullInstanceVbo});
-        glDeleteVertexArrays(new int[] {cubeVao, csgVao, fullVao});
+        glDeleteTextures(new int[] {sceneTexture, directoryTexture, panoramaTexture, meshVertexTexture, meshIndexTexture});
+        glDeleteBuffers(new int[] {sceneBuffer, directoryBuffer, cubeVbo, instanceVbo, csgInstanceVbo, fullInstanceVbo,
+            meshVertexBuffer, meshIndexBuffer});
+        glDeleteVertexArrays(new int[] {cubeVao, csgVao, fullVao, meshVao});
         for (int p : geometryPrograms.values()) glDeleteProgram(p);
         for (int p : shadePrograms.values()) glDeleteProgram(p);
     }

@@ -21,6 +21,7 @@ import java.awt.event.MouseEvent;
 import java.awt.event.MouseWheelEvent;
 import java.awt.image.BufferedImage;
 import java.awt.image.DataBufferInt;
+import java.awt.image.VolatileImage;
 import java.util.EnumMap;
 import java.util.List;
 import java.util.Map;
@@ -84,12 +85,32 @@ public final class LiveViewPanel extends JPanel implements AutoCloseable {
     });
     private final transient java.util.concurrent.atomic.AtomicLong traceGeneration = new java.util.concurrent.atomic.AtomicLong();
 
+    /** The frame's picture where the screen is, and the frame it holds; used on the event dispatch thread. */
+    private transient VolatileImage onScreen;
+    private transient Frame onScreenFrame;
+
     private transient Point pressed;
     private transient Viewport dragged;
     private boolean moved;
 
-    /** What one frame drew: the image and where each viewport lies in it. */
-    private record Frame(BufferedImage image, Map<Viewport, Rectangle> viewports, Map<Viewport, ViewCamera> views) {}
+    /**
+     * What one frame drew: the image (at 1/{@code scale} of the panel's size) and where each
+     * viewport lies in the panel.
+     */
+    private record Frame(BufferedImage image, int scale, Map<Viewport, Rectangle> viewports, Map<Viewport, ViewCamera> views) {}
+
+    /**
+     * A new scene is first drawn at half the panel's width and height (a quarter of the pixels, so
+     * about a quarter of llvmpipe's time), shown scaled up, and then at full size: the view answers
+     * a compile sooner and sharpens a moment later. Camera moves are drawn at full size only.
+     */
+    static final int COARSE_MIN_PIXELS = 320 * 240;
+    /** Set by {@link #setScene} until the next frame request takes it: that frame is drawn coarse first. */
+    private boolean coarseNext;
+    /** Counts the scenes set; the GL thread notes when the first frame of the newest was shown. */
+    private volatile long sceneGeneration;
+    private volatile long shownGeneration;
+    private volatile long firstFrameNanos;
 
     private LiveViewPanel(ExecutorService glThread, GlContext context, LiveRenderer renderer) {
         this.glThread = glThread;
@@ -141,6 +162,11 @@ public final class LiveViewPanel extends JPanel implements AutoCloseable {
 
     public void addSelectionListener(SelectionListener l) { listeners.add(l); }
 
+    private final transient List<java.util.function.Consumer<BufferedImage>> frameListeners = new CopyOnWriteArrayList<>();
+
+    /** Told, on the GL thread, of every frame's picture as it is drawn (coarse ones too). */
+    void addFrameListener(java.util.function.Consumer<BufferedImage> l) { frameListeners.add(l); }
+
     public void removeSelectionListener(SelectionListener l) { listeners.remove(l); }
 
     /**
@@ -165,19 +191,35 @@ public final class LiveViewPanel extends JPanel implements AutoCloseable {
             frameAllOrtho();
         }
         if (selected >= next.entities().size()) selected = -1;
+        coarseNext = true;
+        sceneGeneration++;
         GpuScene upload = gpu;
         glThread.submit(() -> {
             renderer.setScene(upload);
             lastUpdateNanos = System.nanoTime() - start;
         });
-        requestFrame();
+        if (getWidth() <= 0 || getHeight() <= 0) {
+            requestFrame();
+            return;
+        }
+        // At once rather than through the event queue, where the other panels' work on the same
+        // compile result would be ahead of it; a request still queued is taken into this frame.
+        framePending.set(false);
+        submitFrame();
     }
+
+    /**
+     * When ({@link System#nanoTime}) the first frame of the scene last set was ready to paint (the
+     * coarse one, for a panel big enough to have one), or 0 before it.
+     */
+    public long firstFrameNanos() { return shownGeneration == sceneGeneration ? firstFrameNanos : 0; }
 
     /** How long the last {@link #setScene} took from the call until the GPU held the new data. */
     public long lastUpdateNanos() { return lastUpdateNanos; }
 
     /** Selects entity {@code index} (−1 for none) as the studio's navigator or code asks; listeners are not told. */
     public void select(int index) {
+        if (index == selected) return;
         selected = index;
         requestFrame();
     }
@@ -262,7 +304,9 @@ public final class LiveViewPanel extends JPanel implements AutoCloseable {
             return;
         }
         if (!framePending.compareAndSet(false, true)) return;
-        SwingUtilities.invokeLater(this::submitFrame);
+        SwingUtilities.invokeLater(() -> {
+            if (framePending.getAndSet(false)) submitFrame();
+        });
     }
 
     private void submitFrame() {
@@ -276,23 +320,37 @@ public final class LiveViewPanel extends JPanel implements AutoCloseable {
             overlays.put(v, new LiveRenderer.Overlay(selected, hovered, grid,
                     grid ? ortho.get(v).gridSpacing() : 1, Math.max(0, v.gridAxis)));
         }
-        framePending.set(false);
-        glThread.submit(() -> {
-            renderer.resize(w, h);
-            renderer.clear();
-            for (Map.Entry<Viewport, Rectangle> e : rects.entrySet()) {
-                Rectangle r = e.getValue();
-                renderer.draw(views.get(e.getKey()), r.x, r.y, r.width, r.height, overlays.get(e.getKey()));
-            }
-            BufferedImage image = new BufferedImage(w, h, BufferedImage.TYPE_INT_RGB);
-            int[] pixels = ((DataBufferInt) image.getRaster().getDataBuffer()).getData();
-            System.arraycopy(renderer.readColour(), 0, pixels, 0, w * h);
-            frame = new Frame(image, rects, views);
-            SwingUtilities.invokeLater(this::repaint);
-        });
+        boolean coarse = coarseNext && w * h >= COARSE_MIN_PIXELS;
+        coarseNext = false;
+        long generation = sceneGeneration;
+        if (coarse) glThread.submit(() -> draw(w, h, 2, rects, views, overlays, generation));
+        glThread.submit(() -> draw(w, h, 1, rects, views, overlays, generation));
     }
 
-    /** The last frame's image (for tests and screenshots), or null before the first. */
+    /** On the GL thread: draws the viewports at 1/{@code scale} of the panel's size and publishes the frame. */
+    private void draw(int w, int h, int scale, Map<Viewport, Rectangle> rects, Map<Viewport, ViewCamera> views,
+            Map<Viewport, LiveRenderer.Overlay> overlays, long generation) {
+        renderer.resize(w, h);
+        renderer.clear();
+        for (Map.Entry<Viewport, Rectangle> e : rects.entrySet()) {
+            Rectangle r = e.getValue();
+            int x0 = r.x / scale, y0 = r.y / scale;
+            int x1 = (r.x + r.width) / scale, y1 = (r.y + r.height) / scale;
+            renderer.draw(views.get(e.getKey()), x0, y0, Math.max(1, x1 - x0), Math.max(1, y1 - y0), overlays.get(e.getKey()));
+        }
+        int iw = Math.max(1, w / scale), ih = Math.max(1, h / scale);
+        BufferedImage image = new BufferedImage(iw, ih, BufferedImage.TYPE_INT_RGB);
+        renderer.readColour(iw, ih, ((DataBufferInt) image.getRaster().getDataBuffer()).getData());
+        frame = new Frame(image, scale, rects, views);
+        for (java.util.function.Consumer<BufferedImage> l : frameListeners) l.accept(image);
+        if (generation > shownGeneration) {
+            firstFrameNanos = System.nanoTime();
+            shownGeneration = generation;
+        }
+        SwingUtilities.invokeLater(this::repaint);
+    }
+
+    /** The last frame's image (for tests and screenshots), or null before the first; a coarse frame's is smaller than the panel. */
     public BufferedImage lastImage() {
         Frame f = frame;
         return f == null ? null : f.image();
@@ -312,10 +370,16 @@ public final class LiveViewPanel extends JPanel implements AutoCloseable {
 
     /** The entity index seen at panel point (x, y) in the last frame, −1 for none. Blocks briefly on the GL thread. */
     public int entityAt(int x, int y) {
-        Frame f = frame;
-        if (f == null || x < 0 || y < 0 || x >= f.image().getWidth() || y >= f.image().getHeight()) return -1;
+        if (frame == null || x < 0 || y < 0) return -1;
         try {
-            return glThread.submit(() -> renderer.idAt(x, y)).get();
+            return glThread.submit(() -> {
+                // The frame drawn last when this runs: the ids in the framebuffer are its.
+                Frame f = frame;
+                int s = f.scale();
+                int fx = x / s, fy = y / s;
+                if (fx >= f.image().getWidth() || fy >= f.image().getHeight()) return -1;
+                return renderer.idAt(fx, fy);
+            }).get();
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
             return -1;
@@ -462,7 +526,7 @@ public final class LiveViewPanel extends JPanel implements AutoCloseable {
         }
         Frame f = frame;
         if (f == null) return;
-        g2.drawImage(f.image(), 0, 0, null);
+        drawFrame(g2, f);
         Traced t = traced;
         Rectangle freeRect = f.viewports().get(Viewport.FREE);
         if (t != null && freeRect != null && t.camera().equals(free) && t.scene() == scene) {
@@ -481,6 +545,39 @@ public final class LiveViewPanel extends JPanel implements AutoCloseable {
                 g2.drawRect(r.x, r.y, r.width - 1, r.height - 1);
             }
         }
+    }
+
+    /**
+     * The frame's picture, from an image kept where the screen is (a {@link VolatileImage}: on
+     * X11 a pixmap in the X server). A new frame is sent there once; a repaint of the same frame
+     * (another window or a menu uncovering the view, a docking move) is then a copy inside the
+     * server instead of sending the whole picture again, which under load stalled the event
+     * thread for up to half a second.
+     */
+    private void drawFrame(Graphics2D g, Frame f) {
+        int w = f.image().getWidth() * f.scale(), h = f.image().getHeight() * f.scale();
+        for (int attempt = 0; attempt < 3; attempt++) {
+            VolatileImage v = onScreen;
+            int status = v == null ? VolatileImage.IMAGE_INCOMPATIBLE : v.validate(getGraphicsConfiguration());
+            if (status == VolatileImage.IMAGE_INCOMPATIBLE || v.getWidth() != w || v.getHeight() != h) {
+                if (v != null) v.flush();
+                v = getGraphicsConfiguration() == null ? null : createVolatileImage(w, h);
+                onScreen = v;
+                onScreenFrame = null;
+                if (v == null) break;
+            }
+            if (status == VolatileImage.IMAGE_RESTORED) onScreenFrame = null;
+            if (onScreenFrame != f) {
+                Graphics2D vg = v.createGraphics();
+                vg.drawImage(f.image(), 0, 0, w, h, null);
+                vg.dispose();
+                onScreenFrame = f;
+            }
+            g.drawImage(v, 0, 0, null);
+            if (!v.contentsLost()) return;
+            onScreenFrame = null;
+        }
+        g.drawImage(f.image(), 0, 0, w, h, null);
     }
 
     /** The axis gizmo: +x red, +y green, +z blue, as the view sees them. */
@@ -537,6 +634,8 @@ public final class LiveViewPanel extends JPanel implements AutoCloseable {
     /** Frees the GL context and stops the GL and preview threads. */
     @Override
     public void close() {
+        VolatileImage v = onScreen;
+        if (v != null) v.flush();
         traceGeneration.incrementAndGet();
         tracer.shutdownNow();
         Future<?> f = glThread.submit(() -> {

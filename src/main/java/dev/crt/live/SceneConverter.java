@@ -11,6 +11,8 @@ import dev.crt.scene.Entity;
 import dev.crt.scene.Light;
 import dev.crt.scene.Material;
 import dev.crt.scene.AreaLight;
+import dev.crt.scene.Mesh;
+import dev.crt.scene.MeshData;
 import dev.crt.scene.ParallelLight;
 import dev.crt.scene.Plane;
 import dev.crt.scene.PointLight;
@@ -19,13 +21,16 @@ import dev.crt.scene.Primitive;
 import dev.crt.scene.Scene;
 import dev.crt.scene.Sphere;
 import dev.crt.scene.Torus;
+import java.util.ArrayList;
 import java.util.Arrays;
+import java.util.IdentityHashMap;
 import java.util.List;
+import java.util.Map;
 
 /**
  * Turns a {@link Scene} into {@link GpuScene} data: each top-level entity becomes one block that
  * the fragment shader ray-casts exactly (primitives in their local frames, CSG as a postfix
- * program), so the live view shows the same solids as the ray tracer. Kinds it does not know are
+ * program; meshes as triangles, see {@link GpuScene}), so the live view shows the same solids as the ray tracer. Kinds it does not know are
  * refused with an {@link UnsupportedSceneException}, never drawn wrongly.
  */
 public final class SceneConverter {
@@ -33,6 +38,17 @@ public final class SceneConverter {
     private int size;
     /** The primitive kinds written, one bit per kind. */
     private int kinds;
+    /** The distinct meshes met so far and their {vertex base, index base} in the mesh buffers. */
+    private final Map<MeshData, int[]> meshBases = new IdentityHashMap<>();
+    private final List<MeshData> meshes = new ArrayList<>();
+    private int meshVertexTexels, meshIndexCount;
+    /** Top-level meshes: GpuScene.MESH_INSTANCE_INTS ints and 12 floats each. */
+    private int[] meshInstances = new int[0];
+    private float[] meshMatrices = new float[0];
+    private int meshInstanceCount;
+    /** Whether the entity being converted is a CSG tree (its meshes are ray-cast) and its header texel. */
+    private boolean inCsg;
+    private int entityHeader;
 
     /** Converts {@code scene}; throws {@link UnsupportedSceneException} for what the live view cannot draw. */
     public static GpuScene convert(Scene scene) {
@@ -57,6 +73,11 @@ public final class SceneConverter {
             Aabb b = entity(e, i);
             bounds[i] = b;
             if (b.isEmpty()) continue;
+            if (e instanceof Mesh) {
+                // Rasterised, not ray-cast in a proxy box.
+                all = all.union(b);
+                continue;
+            }
             if (b.isFinite()) {
                 int at = e instanceof Primitive ? nb++ : n - 1 - nc++;
                 bounded[at] = offsets[i];
@@ -82,7 +103,10 @@ public final class SceneConverter {
             System.arraycopy(boxes, 6 * (n - nc + k), boxesAll, 6 * (nb + k), 6);
         }
         return new GpuScene(data, size / 4, offsets, bounds, boundedAll, boxesAll, nb, Arrays.copyOf(unbounded, nu), lights, sceneLights.size(),
-                scene.settings().background(), scene.settings().gamma(), scene.settings().camera(), all, kinds);
+                scene.settings().background(), scene.settings().gamma(), scene.settings().camera(), all, kinds,
+                meshes, meshVertexTexels, meshIndexCount,
+                Arrays.copyOf(meshInstances, GpuScene.MESH_INSTANCE_INTS * meshInstanceCount),
+                Arrays.copyOf(meshMatrices, 12 * meshInstanceCount));
     }
 
     private static void put(float[] boxes, int at, Aabb b) {
@@ -146,6 +170,8 @@ public final class SceneConverter {
     /** Writes entity {@code e}'s block; returns its world bounds. */
     private Aabb entity(Entity e, int index) {
         int header = size;
+        entityHeader = header / 4;
+        inCsg = e instanceof Csg;
         reserve(4 * GpuScene.HEADER_TEXELS);
         size += 4 * GpuScene.HEADER_TEXELS;
         steps = 0;
@@ -218,6 +244,7 @@ public final class SceneConverter {
         if (e instanceof Cylinder c) return cone(c.from(), c.to(), c.radius(), c.radius(), c.capped(), c.material(), t);
         if (e instanceof Cone c) return cone(c.from(), c.to(), c.radius(), c.radius2(), c.capped(), c.material(), t);
         if (e instanceof Torus tr) return torus(tr, t);
+        if (e instanceof Mesh m) return mesh(m, t);
         if (e instanceof Csg c) {
             Aabb left = leaves(c.left(), t);
             Aabb right = leaves(c.right(), t);
@@ -289,6 +316,71 @@ public final class SceneConverter {
         material(tr.material());
         double e = tr.major() + tr.minor(), h = tr.minor();
         return new Aabb(new Vec3(-e, -e, -h), new Vec3(e, e, h)).transformed(local);
+    }
+
+    /**
+     * A mesh: its data placed once in the mesh buffers (shared by every instance of it), the leaf
+     * pointing there; a top-level one is also listed for rasterising.
+     */
+    private Aabb mesh(Mesh m, Transform t) {
+        MeshData data = m.data();
+        int triangles = data.triangleCount();
+        if (triangles == 0) return empty(m.material());
+        if (inCsg && !data.closed()) {
+            throw new UnsupportedSceneException("the live view draws only closed meshes inside CSG; the mesh "
+                    + data.name() + " at " + m.span() + " is open");
+        }
+        if (inCsg && triangles > GpuScene.MESH_CAST_LIMIT) {
+            throw new UnsupportedSceneException("the live view draws meshes of at most " + GpuScene.MESH_CAST_LIMIT
+                    + " triangles inside CSG; the mesh " + data.name() + " at " + m.span() + " has " + triangles);
+        }
+        boolean normals = m.smooth() && data.normals() != null;
+        int[] base = meshBases.get(data);
+        if (base == null) {
+            base = new int[] {meshVertexTexels, meshIndexCount};
+            meshBases.put(data, base);
+            meshes.add(data);
+            meshVertexTexels += data.vertexCount() * (data.normals() != null ? 2 : 1);
+            meshIndexCount += data.triangles().length;
+            // The leaf holds the bases as floats: exact up to 2^24.
+            if (meshVertexTexels > 1 << 24 || meshIndexCount > 1 << 24) {
+                throw new UnsupportedSceneException("the live view draws meshes of at most " + (1 << 24)
+                        + " vertices and indices in all; this scene has more");
+            }
+        }
+        kinds |= 1 << GpuScene.MESH;
+        int leaf = size / 4;
+        texel(GpuScene.MESH, normals ? 1 : 0, base[0], base[1]);
+        matrix(t.inverseMatrix());
+        texel(triangles, data.closed() ? 1 : 0, data.vertexCount(), 0);
+        zeros(1);
+        material(m.material());
+        if (!inCsg) {
+            int n = meshInstanceCount++;
+            int k = GpuScene.MESH_INSTANCE_INTS;
+            if (meshInstances.length < k * meshInstanceCount) {
+                meshInstances = Arrays.copyOf(meshInstances, 2 * k * meshInstanceCount);
+                meshMatrices = Arrays.copyOf(meshMatrices, 2 * 12 * meshInstanceCount);
+            }
+            meshInstances[k * n] = entityHeader;
+            meshInstances[k * n + 1] = leaf;
+            meshInstances[k * n + 2] = base[0];
+            meshInstances[k * n + 3] = base[1];
+            meshInstances[k * n + 4] = triangles;
+            double[] w = t.matrix();
+            for (int i = 0; i < 12; i++) meshMatrices[12 * n + i] = (float) w[i];
+        }
+        double[] p = data.positions();
+        double x0 = Double.POSITIVE_INFINITY, y0 = x0, z0 = x0, x1 = Double.NEGATIVE_INFINITY, y1 = x1, z1 = x1;
+        for (int i = 0; i < p.length; i += 3) {
+            x0 = Math.min(x0, p[i]);
+            y0 = Math.min(y0, p[i + 1]);
+            z0 = Math.min(z0, p[i + 2]);
+            x1 = Math.max(x1, p[i]);
+            y1 = Math.max(y1, p[i + 1]);
+            z1 = Math.max(z1, p[i + 2]);
+        }
+        return new Aabb(new Vec3(x0, y0, z0), new Vec3(x1, y1, z1)).transformed(t);
     }
 
     private Aabb box(Box b, Transform t) {

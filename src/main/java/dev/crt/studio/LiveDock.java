@@ -34,6 +34,7 @@ import org.fife.ui.rsyntaxtextarea.RSyntaxTextArea;
  * render view and the code through {@link StudioModel}, and "Copy camera to script". OpenGL
  * starts off the Event Dispatch Thread when the panel is first shown (start-up does not wait for
  * it); where it cannot start, the panel says why in one sentence and the rest of the studio works.
+ * At the Animation panel's time t other than 0 it shows the script compiled at t ({@link SceneAtTime}).
  */
 final class LiveDock extends JPanel implements StudioModel.Listener {
     private static final long serialVersionUID = 1L;
@@ -62,6 +63,9 @@ final class LiveDock extends JPanel implements StudioModel.Listener {
     private transient ScriptDocument shown;
     private transient Scene scene;
     private volatile long followNanos = -1;
+    private volatile long firstFrameNanos = -1;
+    /** Compiles the shown script at the studio's time t when t is not 0 (the background compile's time). */
+    private final transient SceneAtTime atTime = new SceneAtTime(this::compiledAt);
 
     LiveDock(StudioModel model, Function<ScriptDocument, ScriptEditor> editors, ConsolePanel console) {
         this(model, editors, console, LiveViewPanel::open);
@@ -113,8 +117,11 @@ final class LiveDock extends JPanel implements StudioModel.Listener {
 
     Action copyCameraAction() { return copyCamera; }
 
-    /** From a compile's result reaching the studio to the view's frame of it being drawn, or −1. */
+    /** From a compile's result reaching the studio to the view's full-size frame of it being drawn, or −1. */
     long lastFollowNanos() { return followNanos; }
+
+    /** From a compile's result reaching the studio to the view's first frame of it (the coarse one) being drawn, or −1. */
+    long lastFirstFrameNanos() { return firstFrameNanos; }
 
     /** Opens OpenGL on a thread of its own; the view appears when it is ready. */
     void start() {
@@ -160,7 +167,7 @@ final class LiveDock extends JPanel implements StudioModel.Listener {
         revalidate();
         for (Action a : new Action[] {copyCamera, quad, frameAll, preview}) a.setEnabled(true);
         ScriptDocument d = model.current();
-        if (d != null && d.result() != null && d.result().scene() != null) show(d, d.result().scene(), System.nanoTime());
+        if (d != null && d.result() != null && d.result().scene() != null) follow(d, d.result().scene(), System.nanoTime());
         else if (scene != null) show(shown, scene, System.nanoTime());
     }
 
@@ -175,14 +182,51 @@ final class LiveDock extends JPanel implements StudioModel.Listener {
             status.setText("showing the last version without errors");
             return;
         }
-        show(d, result.scene(), at);
+        follow(d, result.scene(), at);
     }
 
     @Override
     public void currentChanged(ScriptDocument d) {
         if (d == null || d == shown) return;
         CompileResult r = d.result();
-        if (r != null && r.scene() != null) show(d, r.scene(), System.nanoTime());
+        if (r != null && r.scene() != null) follow(d, r.scene(), System.nanoTime());
+    }
+
+    @Override
+    public void timeChanged(double t) {
+        ScriptDocument d = model.current();
+        CompileResult r = d == null ? null : d.result();
+        if (r != null && r.scene() != null) follow(d, r.scene(), System.nanoTime());
+    }
+
+    /**
+     * Shows {@code d}'s scene at the studio's time: the background compile's {@code atZero} at
+     * t = 0, else the script compiled at t (at once when that compile is at hand, else when it is
+     * done; the view keeps its frame meanwhile).
+     */
+    private void follow(ScriptDocument d, Scene atZero, long since) {
+        double t = model.time();
+        if (t == 0) {
+            atTime.forget();
+            show(d, atZero, since);
+            return;
+        }
+        Scene ready = atTime.request(d, d.version(), d.source(), t, since);
+        if (ready != null) show(d, ready, since);
+    }
+
+    /** A compile at t finished (on the Event Dispatch Thread): shown if it is still what the studio looks at. */
+    private void compiledAt(ScriptDocument d, long version, double t, CompileResult result, long since) {
+        if (state == State.CLOSED || d != model.current() || d.version() != version || model.time() != t) return;
+        if (result.scene() == null) {
+            status.setText("t = " + fmt(t) + ": the script has errors there; showing the last scene without errors");
+            return;
+        }
+        show(d, result.scene(), since);
+    }
+
+    private static String fmt(double t) {
+        return t == Math.rint(t) ? Long.toString((long) t) : Double.toString(t);
     }
 
     @Override
@@ -200,17 +244,21 @@ final class LiveDock extends JPanel implements StudioModel.Listener {
         shown = d;
         scene = next;
         if (view == null) return;
-        view.setScene(next);
+        // Camera and selection first: setScene draws at once, with them.
         // Another script brings its own camera; a recompile of the same one keeps the view's.
         if (otherDocument) view.setFreeCamera(FreeCamera.of(next.settings().camera()));
         view.select(model.selectedDocument() == d ? model.selectedIndex() : -1);
-        status.setText(next.entities().size() + " entities");
+        view.setScene(next);
+        double t = model.time();
+        status.setText(next.entities().size() + " entities" + (t == 0 ? "" : " at t = " + fmt(t)));
         if (!view.isShowing()) return;
         LiveViewPanel v = view;
         timing.submit(() -> {
             try {
                 v.awaitIdle();
                 followNanos = System.nanoTime() - since;
+                long first = v.firstFrameNanos();
+                firstFrameNanos = first > 0 ? first - since : -1;
             } catch (InterruptedException e) {
                 Thread.currentThread().interrupt();
             } catch (java.util.concurrent.ExecutionException e) {
@@ -303,6 +351,7 @@ final class LiveDock extends JPanel implements StudioModel.Listener {
         state = State.CLOSED;
         model.removeListener(this);
         timing.shutdownNow();
+        atTime.close();
         if (view != null) {
             view.close();
             view = null;

@@ -4,6 +4,7 @@ flat in int entity;
 layout(location = 0) out int id;
 layout(location = 1) out float depth;
 layout(location = 2) out int leafAddress;
+layout(location = 3) out int face;
 uniform float depthScale;
 
 void main() {
@@ -26,5 +27,10 @@ void main() {
     id = int(header.z) + 1;
     depth = t;
     leafAddress = entity + 3 + int(header.y) + leaf * LEAF_TEXELS;
+#ifdef HAS_MESH
+    face = faceHit;
+#else
+    face = 0;
+#endif
     gl_FragDepth = t / (t + depthScale);
 }

@@ -3,7 +3,7 @@
 // the CSG program on the set of primitives the ray is inside: the same method as the ray tracer.
 uniform samplerBuffer scene;
 
-const int SPHERE = 0, BOX = 1, PLANE = 2, EMPTY = 3, CONE = 4, TORUS = 5;
+const int SPHERE = 0, BOX = 1, PLANE = 2, EMPTY = 3, CONE = 4, TORUS = 5, MESH = 6;
 const int LEAF_TEXELS = 9;
 // Two per primitive, four for a torus (two intervals). HAS_CONE and HAS_TORUS compile those kinds
 // in only for scenes that have them: llvmpipe pays for every branch on every pixel.
@@ -15,6 +15,13 @@ const int MAX_EVENTS = 64;
 
 float evT[MAX_EVENTS];
 int evL[MAX_EVENTS];
+#ifdef HAS_MESH
+// The triangle of each mesh crossing, and of the hit the walk returned (the shading needs its normal).
+int evF[MAX_EVENTS];
+int faceHit;
+uniform samplerBuffer meshVertices;
+uniform isamplerBuffer meshIndices;
+#endif
 #ifdef HAS_TORUS
 // A torus's second interval along the ray (leafSpan returns the first); INF when there is none.
 float span2A, span2B;
@@ -213,6 +220,84 @@ bool coneSpan(vec4 hd, vec3 o, vec3 d, out float a, out float b) {
 
 #endif
 
+#ifdef HAS_MESH
+// The corners of triangle f of the mesh leaf L, in the mesh's coordinates.
+void meshTriangle(int L, int f, out vec3 a, out vec3 b, out vec3 c) {
+    vec4 hd = T(L);
+    int vb = int(hd.z), ib = int(hd.w) + 3 * f;
+    a = texelFetch(meshVertices, vb + texelFetch(meshIndices, ib).x).xyz;
+    b = texelFetch(meshVertices, vb + texelFetch(meshIndices, ib + 1).x).xyz;
+    c = texelFetch(meshVertices, vb + texelFetch(meshIndices, ib + 2).x).xyz;
+}
+
+// Every crossing of the line o + t d (mesh coordinates) with the mesh of leaf k at L: each one
+// toggles whether the line is inside (a closed mesh's inside by parity, as the ray tracer's),
+// those up to tMin at once, the later ones as events. Meshes of more than MESH_CAST_LIMIT
+// triangles are not cast (they cast no shadows; the converter keeps them out of CSG).
+void meshEvents(int k, int L, vec3 o, vec3 d, float tMin, inout uint mask, inout int n) {
+    int count = int(T(L + 4).x);
+    if (count > MESH_CAST_LIMIT) return;
+    for (int f = 0; f < count; f++) {
+        vec3 a, b, c;
+        meshTriangle(L, f, a, b, c);
+        // Moller and Trumbore, edges inclusive.
+        vec3 e1 = b - a, e2 = c - a, pv = cross(d, e2);
+        float det = dot(e1, pv);
+        if (det == 0.0) continue;
+        float inv = 1.0 / det;
+        vec3 tv = o - a;
+        float u = dot(tv, pv) * inv;
+        if (u < 0.0 || u > 1.0) continue;
+        vec3 qv = cross(tv, e1);
+        float v = dot(d, qv) * inv;
+        if (v < 0.0 || u + v > 1.0) continue;
+        float t = dot(e2, qv) * inv;
+        if (t <= tMin) {
+            mask ^= 1u << uint(k);
+        } else if (n < MAX_EVENTS) {
+            evT[n] = t; evL[n] = k; evF[n] = f; n++;
+        }
+    }
+}
+
+// The winding normal of the triangle meshNormal last looked at, and how far the origin of its
+// shadow rays moves onto the smooth surface, in mesh coordinates.
+vec3 meshGeometric, meshLift;
+
+// The normal of triangle f of mesh leaf L at world point p, in mesh coordinates: the vertex
+// normals blended by the point's barycentric coordinates when smooth, the winding's otherwise.
+vec3 meshNormal(int L, int f, vec3 q) {
+    vec3 a, b, c;
+    meshTriangle(L, f, a, b, c);
+    vec3 e1 = b - a, e2 = c - a;
+    vec3 n = cross(e1, e2);
+    meshGeometric = n;
+    meshLift = vec3(0.0);
+    vec4 hd = T(L);
+    if (hd.y == 0.0) return n;
+    vec3 w = q - a;
+    float d00 = dot(e1, e1), d01 = dot(e1, e2), d11 = dot(e2, e2), d20 = dot(w, e1), d21 = dot(w, e2);
+    float den = d00 * d11 - d01 * d01;
+    if (den == 0.0) return n;
+    float b1 = clamp((d11 * d20 - d01 * d21) / den, 0.0, 1.0);
+    float b2 = clamp((d00 * d21 - d01 * d20) / den, 0.0, 1.0 - b1);
+    int vb = int(hd.z) + int(T(L + 4).z), ib = int(hd.w) + 3 * f;
+    vec3 na = texelFetch(meshVertices, vb + texelFetch(meshIndices, ib).x).xyz;
+    vec3 nb = texelFetch(meshVertices, vb + texelFetch(meshIndices, ib + 1).x).xyz;
+    vec3 nc = texelFetch(meshVertices, vb + texelFetch(meshIndices, ib + 2).x).xyz;
+    float b0 = 1.0 - b1 - b2;
+    vec3 s = b0 * na + b1 * nb + b2 * nc;
+    if (!(dot(s, s) > 0.0)) return n;
+    // Shadow rays leave from the smooth surface the vertex normals describe, as the ray tracer's
+    // do (MeshShape.lift): the flat point moved out of each corner's tangent plane it lies below.
+    vec3 x = a + b1 * e1 + b2 * e2;
+    vec3 lifted = x - b0 * min(0.0, dot(x - a, na)) * na - b1 * min(0.0, dot(x - b, nb)) * nb
+            - b2 * min(0.0, dot(x - c, nc)) * nc;
+    meshLift = lifted - q;
+    return s;
+}
+#endif
+
 bool leafSpan(int L, vec3 ro, vec3 rd, out float a, out float b) {
 #ifdef HAS_TORUS
     span2A = INF;
@@ -313,6 +398,16 @@ float walk(int o, vec3 ro, vec3 rd, float tMin, float tMax, bool transmittance, 
     int n = 0;
     for (int k = 0; k < leaves; k++) {
         float a, b;
+#ifdef HAS_MESH
+        int L = first + k * LEAF_TEXELS;
+        if (int(T(L).x) == MESH) {
+            vec4 r0 = T(L + 1), r1 = T(L + 2), r2 = T(L + 3);
+            vec3 o = vec3(dot(r0.xyz, ro) + r0.w, dot(r1.xyz, ro) + r1.w, dot(r2.xyz, ro) + r2.w);
+            vec3 d = vec3(dot(r0.xyz, rd), dot(r1.xyz, rd), dot(r2.xyz, rd));
+            meshEvents(k, L, o, d, tMin, mask, n);
+            continue;
+        }
+#endif
         if (!leafSpan(first + k * LEAF_TEXELS, ro, rd, a, b)) continue;
         event(k, a, b, tMin, mask, n);
 #ifdef HAS_TORUS
@@ -323,7 +418,13 @@ float walk(int o, vec3 ro, vec3 rd, float tMin, float tMax, bool transmittance, 
         float t = evT[i];
         int l = evL[i];
         int j = i;
+#ifdef HAS_MESH
+        int f = evF[i];
+        while (j > 0 && evT[j - 1] > t) { evT[j] = evT[j - 1]; evL[j] = evL[j - 1]; evF[j] = evF[j - 1]; j--; }
+        evF[j] = f;
+#else
         while (j > 0 && evT[j - 1] > t) { evT[j] = evT[j - 1]; evL[j] = evL[j - 1]; j--; }
+#endif
         evT[j] = t;
         evL[j] = l;
     }
@@ -343,7 +444,14 @@ float walk(int o, vec3 ro, vec3 rd, float tMin, float tMax, bool transmittance, 
         }
         bool now = inside(program, steps, mask);
         if (now != state) {
-            if (!transmittance) { tHit = evT[shown]; leafHit = evL[shown]; return 1.0; }
+            if (!transmittance) {
+                tHit = evT[shown];
+                leafHit = evL[shown];
+#ifdef HAS_MESH
+                faceHit = evF[shown];
+#endif
+                return 1.0;
+            }
             product *= T(first + evL[shown] * LEAF_TEXELS + 7).z;
             if (product == 0.0) return 0.0;
         }
@@ -353,14 +461,29 @@ float walk(int o, vec3 ro, vec3 rd, float tMin, float tMax, bool transmittance, 
     return transmittance ? product : 0.0;
 }
 
-vec3 normalAt(int L, vec3 p) {
+// The geometric normal (in world coordinates) of the point normalAt last looked at: the one it
+// returned, except on a smooth mesh, whose blended vertex normal is turned to its side of it.
+vec3 geometricNormal;
+// Where shadow rays start from, relative to p, for the point normalAt last looked at (a smooth mesh's lift).
+vec3 shadowLift;
+
+// The world normal of leaf L at p (face: the triangle, for a mesh leaf).
+vec3 normalAt(int L, int face, vec3 p) {
     int kind = int(T(L).x);
-    if (kind == PLANE) return T(L + 1).xyz;
+    shadowLift = vec3(0.0);
+    if (kind == PLANE) {
+        geometricNormal = T(L + 1).xyz;
+        return geometricNormal;
+    }
     vec4 r0 = T(L + 1), r1 = T(L + 2), r2 = T(L + 3);
     vec3 q = vec3(dot(r0.xyz, p) + r0.w, dot(r1.xyz, p) + r1.w, dot(r2.xyz, p) + r2.w);
     vec3 n;
     if (kind == SPHERE) {
         n = q;
+#ifdef HAS_MESH
+    } else if (kind == MESH) {
+        n = meshNormal(L, face, q);
+#endif
 #ifdef HAS_CONE
     } else if (kind == CONE) {
         // The cap or the side, whichever the point lies closer to (in scene units: the frame's z is the length).
@@ -386,7 +509,15 @@ vec3 normalAt(int L, vec3 p) {
         n = ac.x >= ac.y && ac.x >= ac.z ? vec3(sign(c.x), 0, 0) : ac.y >= ac.z ? vec3(0, sign(c.y), 0) : vec3(0, 0, sign(c.z));
     }
     // The inverse transpose: the rows of the world-to-local matrix, weighted.
-    return normalize(n.x * r0.xyz + n.y * r1.xyz + n.z * r2.xyz);
+    vec3 world = normalize(n.x * r0.xyz + n.y * r1.xyz + n.z * r2.xyz);
+    geometricNormal = world;
+#ifdef HAS_MESH
+    if (kind == MESH) {
+        geometricNormal = normalize(meshGeometric.x * r0.xyz + meshGeometric.y * r1.xyz + meshGeometric.z * r2.xyz);
+        if (T(L).y != 0.0) shadowLift = inverse(transpose(mat3(r0.xyz, r1.xyz, r2.xyz))) * meshLift;
+    }
+#endif
+    return world;
 }
 
 bool boxCrossed(int o, vec3 ro, vec3 rd, float tMax) {

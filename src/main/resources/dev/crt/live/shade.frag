@@ -5,6 +5,7 @@ layout(location = 0) out vec4 colour;
 uniform isampler2D ids;
 uniform sampler2D depths;
 uniform isampler2D leaves;
+uniform isampler2D faces;
 uniform isamplerBuffer directory;
 uniform int entityCount;
 uniform int shadowLights;     // and only for the first this many lights
@@ -56,8 +57,11 @@ void main() {
     float t = texelFetch(depths, p, 0).x;
     int L = texelFetch(leaves, p, 0).x;
     vec3 x = ro + t * rd;
-    vec3 ng = normalAt(L, x);
-    vec3 n = dot(rd, ng) < 0.0 ? ng : -ng;
+    vec3 ns = normalAt(L, texelFetch(faces, p, 0).x, x);
+    // Facing the ray as the geometric normal does; a smooth mesh's shading normal is turned with it, as the ray tracer turns it.
+    if (dot(ns, geometricNormal) < 0.0) ns = -ns;
+    float side = dot(rd, geometricNormal) < 0.0 ? 1.0 : -1.0;
+    vec3 n = side * ns;
     vec4 m0 = T(L + 6), m1 = T(L + 7), m2 = T(L + 8);
     vec3 base = m0.rgb;
     float kd = m0.a, ks = m1.x, shininess = m1.y, kt = m1.z, kr = m1.w;
@@ -96,7 +100,7 @@ void main() {
         // As the ray tracer: a light that adds nothing here casts no shadow ray.
         if (diffuse == 0.0 && specular == 0.0) continue;
 #ifdef SHADOWS
-        float s = l < shadowLights ? shadow(x + n * offset, w, dist) : 1.0;
+        float s = l < shadowLights ? shadow(x + shadowLift + side * geometricNormal * offset, w, dist) : 1.0;
 #else
         float s = 1.0;
 #endif

@@ -76,6 +76,34 @@ class LiveViewPanelTest {
     }
 
     @Test
+    void aNewSceneIsDrawnAtHalfSizeFirstAndACameraMoveAtFullSizeOnly() throws Exception {
+        Scene scene = AlignmentTest.compile(Path.of("scenes/dice.crt"));
+        onEdt(() -> panel.setSize(640, 480));
+        List<BufferedImage> drawn = new java.util.concurrent.CopyOnWriteArrayList<>();
+        panel.addFrameListener(drawn::add);
+        onEdt(() -> panel.setScene(scene));
+        assertThat(drawn).extracting(BufferedImage::getWidth).containsExactly(320, 640);
+        assertThat(panel.firstFrameNanos()).isPositive();
+        // The coarse picture is the sharp one at half the resolution: the same colours nearly everywhere.
+        BufferedImage coarse = drawn.get(0), sharp = drawn.get(1);
+        int close = 0;
+        for (int y = 0; y < 240; y++) {
+            for (int x = 0; x < 320; x++) {
+                int a = coarse.getRGB(x, y), b = sharp.getRGB(2 * x, 2 * y);
+                int d = Math.abs((a >> 16 & 255) - (b >> 16 & 255)) + Math.abs((a >> 8 & 255) - (b >> 8 & 255)) + Math.abs((a & 255) - (b & 255));
+                if (d < 30) close++;
+            }
+        }
+        assertThat(close).isGreaterThan(320 * 240 * 9 / 10);
+        assertThat(panel.entityAt(320, 240)).isEqualTo(dev.crt.render.Renderer.prepare(
+                scene.withSettings(scene.settings().withSize(640, 480))).idPass()[240 * 640 + 320]);
+
+        drawn.clear();
+        onEdt(() -> panel.key(KeyEvent.VK_LEFT, false));
+        assertThat(drawn).extracting(BufferedImage::getWidth).containsExactly(640);
+    }
+
+    @Test
     void draggingOrbitsTheFreeCameraAndKeysSwitchViews() throws Exception {
         Scene scene = AlignmentTest.compile(Path.of("scenes/dice.crt"));
         onEdt(() -> panel.setScene(scene));
