@@ -17,6 +17,7 @@ import org.antlr.v4.runtime.CharStreams;
 import org.antlr.v4.runtime.CommonTokenStream;
 import org.antlr.v4.runtime.ParserRuleContext;
 import org.antlr.v4.runtime.Token;
+import org.antlr.v4.runtime.atn.PredictionMode;
 import org.antlr.v4.runtime.misc.ParseCancellationException;
 import org.antlr.v4.runtime.tree.ParseTree;
 import org.antlr.v4.runtime.tree.TerminalNode;
@@ -25,15 +26,20 @@ import org.junit.jupiter.api.Test;
 /**
  * The hand-written reader builds exactly the tree ANTLR's generated parser builds (same context
  * classes, children, labelled tokens, and every token's type, text and positions), accepts every
- * script the generated parser accepts without a lexical mistake, and refuses every other: on the
+ * script the generated parser accepts without a lexical mistake, and refuses every other (and
+ * ANTLR's LL prediction, which reads the refused ones, gives SLL's tree): on the
  * example scenes, on thousands of random expressions using every operator and construct, and on
  * thousands of mangled scripts.
  */
 class QuickParserTest {
     private static final ParseClock UNLIMITED = new ParseClock(System.nanoTime(), Duration.ofDays(1));
 
-    /** ANTLR's statements for {@code script}, or null when it has a lexical or syntax mistake. */
-    private static List<CRTParser.StatementContext> antlr(String script) {
+    /**
+     * ANTLR's statements for {@code script} with SLL prediction (or full LL, the prediction of
+     * ScriptParser's reading of the scripts QuickParser refuses), or null when it has a lexical or
+     * syntax mistake.
+     */
+    private static List<CRTParser.StatementContext> antlr(String script, PredictionMode mode) {
         CommonTokenStream tokens = new CommonTokenStream(new CRTLexer(CharStreams.fromString(script)));
         tokens.fill();
         for (Token t : tokens.getTokens()) {
@@ -43,6 +49,7 @@ class QuickParserTest {
         }
         CRTParser parser = ScriptParser.checkingParser(tokens, UNLIMITED);
         parser.setBuildParseTree(true);
+        parser.getInterpreter().setPredictionMode(mode);
         try {
             return parser.script().statement();
         } catch (ParseCancellationException mistake) {
@@ -52,7 +59,14 @@ class QuickParserTest {
 
     /** Checks that both readers agree on {@code script}; whether they accepted it. */
     private static boolean agree(String script) {
-        List<CRTParser.StatementContext> expected = antlr(script);
+        List<CRTParser.StatementContext> expected = antlr(script, PredictionMode.SLL);
+        if (expected != null) {
+            // A valid script with characters beyond the Basic Multilingual Plane is read by ANTLR
+            // with LL prediction: its tree must be the one SLL prediction gave until now.
+            List<CRTParser.StatementContext> full = antlr(script, PredictionMode.LL);
+            assertThat(full).hasSameSizeAs(expected);
+            for (int i = 0; i < expected.size(); i++) same(full.get(i), expected.get(i), script);
+        }
         QuickParser.Result quick = QuickParser.parse(script, UNLIMITED);
         boolean beyondBmp = script.codePoints().anyMatch(Character::isSupplementaryCodePoint);
         if (expected == null || beyondBmp) {
