@@ -6,7 +6,9 @@ import dev.crt.lang.parser.CRTLexer;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.HashSet;
+import java.util.Iterator;
 import java.util.List;
+import java.util.NoSuchElementException;
 import java.util.Set;
 import org.antlr.v4.runtime.ParserRuleContext;
 import org.antlr.v4.runtime.tree.ParseTree;
@@ -44,11 +46,54 @@ final class QuickParser {
         }
     }
 
-    /** The statements of a script and the names it assigns or binds as macro parameters. */
-    record Result(List<StatementContext> statements, Set<String> assignedNames) {}
+    // The trees of the top-level statements that start within this many tokens are kept from the
+    // reading. A later statement's tree (in a script of hundreds of thousands of statements) is
+    // let go once the reading has checked it and built again from the tokens when it is to run,
+    // so that such a script never holds all of its tree, and its tokens go as its statements run.
+    private static final int KEPT_TOKENS = 1 << 20;
+
+    /** A script read without mistakes: its top-level statements, handed out in order, and the names it assigns. */
+    static final class Result implements Iterator<StatementContext> {
+        private final QuickParser parser;
+        private final List<StatementContext> kept;
+        private final int[] starts;
+        private final Set<String> assignedNames;
+        private int next;
+
+        private Result(QuickParser parser, List<StatementContext> kept, int[] starts, Set<String> assignedNames) {
+            this.parser = parser;
+            this.kept = kept;
+            this.starts = starts;
+            this.assignedNames = assignedNames;
+        }
+
+        /** Every name the script assigns or binds as a macro parameter. */
+        Set<String> assignedNames() { return assignedNames; }
+
+        @Override
+        public boolean hasNext() { return next < starts.length; }
+
+        @Override
+        public StatementContext next() {
+            if (!hasNext()) throw new NoSuchElementException();
+            StatementContext statement = kept.get(next);
+            if (statement == null) {
+                parser.p = starts[next];
+                statement = parser.statement(null);
+            } else {
+                kept.set(next, null);
+            }
+            // The statement's tokens are leaves of its tree now; the reader needs them no more.
+            int end = next + 1 < starts.length ? starts[next + 1] : parser.count - 1;
+            Arrays.fill(parser.tokens, starts[next], end, null);
+            next++;
+            return statement;
+        }
+    }
 
     private final String text;
-    private final ParseClock clock;
+    // Null once the reading is done: a statement built again when it runs was already timed.
+    private ParseClock clock;
     private ScriptToken[] tokens = new ScriptToken[1024];
     private int count;
     private int p;
@@ -64,13 +109,25 @@ final class QuickParser {
      * The parse of {@code text}, or null when it has a mistake (or characters beyond the Basic
      * Multilingual Plane, whose code-point positions the generated lexer counts).
      */
-    static Result parse(String text, ParseClock clock) {
+    static Result parse(String text, ParseClock clock) { return parse(text, clock, KEPT_TOKENS); }
+
+    /** The same, keeping from the reading the trees of the statements that start within {@code keptTokens} tokens. */
+    static Result parse(String text, ParseClock clock, int keptTokens) {
         QuickParser parser = new QuickParser(text, clock);
         try {
             if (!parser.lex()) return null;
-            List<StatementContext> statements = new ArrayList<>();
-            while (parser.type() != EOF) statements.add(parser.statement(null));
-            return new Result(statements, parser.assignedNames());
+            List<StatementContext> kept = new ArrayList<>();
+            int[] starts = new int[16];
+            int n = 0;
+            while (parser.type() != EOF) {
+                if (n == starts.length) starts = Arrays.copyOf(starts, n * 2);
+                int start = parser.p;
+                starts[n++] = start;
+                StatementContext statement = parser.statement(null);
+                kept.add(start < keptTokens ? statement : null);
+            }
+            parser.clock = null;
+            return new Result(parser, kept, Arrays.copyOf(starts, n), parser.assignedNames());
         } catch (GiveUp mistake) {
             return null;
         }
@@ -291,7 +348,7 @@ final class QuickParser {
     /** The current token, read as a child of {@code ctx}. */
     private ScriptToken take(ParserRuleContext ctx) {
         ScriptToken token = tokens[p++];
-        clock.tick(token);
+        if (clock != null) clock.tick(token);
         token.parent = ctx;
         return token;
     }

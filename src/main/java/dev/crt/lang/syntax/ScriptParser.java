@@ -60,7 +60,7 @@ public final class ScriptParser {
     private static Parsed parseWithin(TextPositions positions, ParseClock clock) {
         // A script without mistakes, nearly every one that is compiled, is read once by hand.
         QuickParser.Result quick = QuickParser.parse(positions.text(), clock);
-        if (quick != null) return new Parsed(handedOut(quick.statements()), List.of(), quick.assignedNames());
+        if (quick != null) return new Parsed(quick, List.of(), quick.assignedNames());
 
         // A script with a mistake is read once by ANTLR, with full LL prediction and the error
         // recovery that finds every mistake (up to the limit) and says each one for people.
