@@ -61,12 +61,6 @@ public final class CrtCompiler {
                 Scene scene = evaluator.run(parsed.statements(), parsed.assignedNames(), name);
                 return new CompileResult(scene, evaluator.diagnostics(), scene == null ? null : evaluator.sourceMap(),
                         evaluator.ranOutOfMemory());
-            } catch (ParseClock.OutOfTime out) {
-                // The statements are parsed again as they run; the budget covers that parse too.
-                List<Diagnostic> all = new ArrayList<>(evaluator.diagnostics());
-                int at = positions.charOffset(out.at().getStartIndex());
-                all.add(error(out.getMessage(), positions.span(at, at)));
-                return new CompileResult(null, all);
             } catch (StackOverflowError e) {
                 List<Diagnostic> all = new ArrayList<>(evaluator.diagnostics());
                 all.add(error("evaluation nested too deeply (an expression or list nested thousands of levels deep?)",

@@ -14,6 +14,9 @@ public final class TextPositions {
     private final int[] lineStarts;
     // Character offset of each code point, only when the text has surrogate pairs (else identity).
     private final int[] charOfCodePoint;
+    // The spans asked for lately: a loop asks for the same few on every turn (an object, its
+    // attributes), and a million spheres then share one span instead of a search and a copy each.
+    private final SourceSpan[] recent = new SourceSpan[256];
 
     public TextPositions(String file, String text) {
         this.file = file;
@@ -63,10 +66,15 @@ public final class TextPositions {
     public SourceSpan span(int start, int end) {
         start = Math.min(Math.max(start, 0), text.length());
         end = Math.min(Math.max(end, start), text.length());
+        int slot = (start * 31 + end) & (recent.length - 1);
+        SourceSpan known = recent[slot];
+        if (known != null && known.start() == start && known.end() == end) return known;
         int line = lineOf(start);
         // The column counts characters as a person sees them: an emoji (two chars in Java) is one.
         int column = charOfCodePoint == null ? start - lineStarts[line] : text.codePointCount(lineStarts[line], start);
-        return new SourceSpan(file, line + 1, column + 1, start, end);
+        SourceSpan span = new SourceSpan(file, line + 1, column + 1, start, end);
+        recent[slot] = span;
+        return span;
     }
 
     private int lineOf(int offset) {

@@ -8,44 +8,26 @@ import dev.crt.lang.parser.CRTParser;
 import java.time.Duration;
 import java.util.ArrayList;
 import java.util.Comparator;
-import java.util.HashMap;
 import java.util.HashSet;
 import java.util.Iterator;
 import java.util.List;
-import java.util.Map;
 import java.util.Set;
 import org.antlr.v4.runtime.BailErrorStrategy;
 import org.antlr.v4.runtime.CharStream;
 import org.antlr.v4.runtime.CharStreams;
-import org.antlr.v4.runtime.CommonToken;
-import org.antlr.v4.runtime.CommonTokenFactory;
 import org.antlr.v4.runtime.CommonTokenStream;
 import org.antlr.v4.runtime.Token;
-import org.antlr.v4.runtime.TokenSource;
 import org.antlr.v4.runtime.TokenStream;
-import org.antlr.v4.runtime.UnbufferedTokenStream;
 import org.antlr.v4.runtime.atn.PredictionMode;
-import org.antlr.v4.runtime.misc.Pair;
-import org.antlr.v4.runtime.misc.ParseCancellationException;
 
 /**
- * Checks a whole script for syntax errors, reporting every one (up to a limit) as diagnostics;
- * a script without errors is then handed out one top-level statement at a time, so that a huge
- * script never holds all of its parse tree in memory at once.
+ * Reads a whole script once: a script without mistakes by {@link QuickParser}, one with
+ * mistakes by ANTLR, which reports every syntax error (up to a limit) as a diagnostic. The
+ * statements of a script without errors are handed out in order to be run.
  */
 public final class ScriptParser {
     /** The most syntax errors reported for one file; more only add noise. */
     public static final int MAX_ERRORS = 20;
-
-    // The text of every keyword and operator token, from the grammar's vocabulary.
-    private static final String[] FIXED_TEXT = new String[CRTLexer.VOCABULARY.getMaxTokenType() + 1];
-
-    static {
-        for (int type = 1; type < FIXED_TEXT.length; type++) {
-            String literal = CRTLexer.VOCABULARY.getLiteralName(type);
-            if (literal != null) FIXED_TEXT[type] = literal.substring(1, literal.length() - 1);
-        }
-    }
 
     private ScriptParser() {}
 
@@ -76,6 +58,12 @@ public final class ScriptParser {
     }
 
     private static Parsed parseWithin(TextPositions positions, ParseClock clock) {
+        // A script without mistakes, nearly every one that is compiled, is read once by hand.
+        QuickParser.Result quick = QuickParser.parse(positions.text(), clock);
+        if (quick != null) return new Parsed(quick, List.of(), quick.assignedNames());
+
+        // A script with a mistake is read once by ANTLR, with full LL prediction and the error
+        // recovery that finds every mistake (up to the limit) and says each one for people.
         CharStream chars = CharStreams.fromString(positions.text());
         CRTLexer lexer = clock.lexer(chars);
         lexer.removeErrorListeners();
@@ -84,34 +72,26 @@ public final class ScriptParser {
         SyntaxErrors errors = new SyntaxErrors(positions);
         reportLexicalMistakes(tokens, errors);
         Set<String> assigned = assignedNames(tokens.getTokens());
-
-        // Two stages, as ANTLR recommends: the fast SLL prediction, without building a tree,
-        // succeeds for almost every script; only a script it fails on is parsed again with full
-        // LL and error recovery, which reports the errors.
         CRTParser parser = checkingParser(tokens, clock);
-        PredictionMode enough = PredictionMode.SLL;
+        parser.setBuildParseTree(true);
+        parser.getInterpreter().setPredictionMode(PredictionMode.LL);
+        parser.setErrorHandler(new HumanErrorStrategy(positions));
+        parser.addErrorListener(errors);
+        CRTParser.ScriptContext script = null;
         try {
-            parser.script();
-        } catch (ParseCancellationException sllFailed) {
-            enough = PredictionMode.LL;
-            tokens.seek(0);
-            parser.reset();
-            parser.setBuildParseTree(true);
-            parser.getInterpreter().setPredictionMode(PredictionMode.LL);
-            parser.setErrorHandler(new HumanErrorStrategy(positions));
-            parser.addErrorListener(errors);
-            try {
-                parser.script();
-            } catch (SyntaxErrors.TooManyErrors tooMany) {
-                // The first errors are all anyone reads.
-            }
+            script = parser.script();
+        } catch (SyntaxErrors.TooManyErrors tooMany) {
+            // The first errors are all anyone reads.
         }
         List<Diagnostic> found = errors.diagnostics();
         if (!found.isEmpty()) return new Parsed(null, limit(found), assigned);
-        return new Parsed(new Statements(chars, enough, clock), List.of(), assigned);
+        // A script the quick reader refused but the grammar accepts: ANTLR's tree serves.
+        List<CRTParser.StatementContext> statements = new ArrayList<>(script.statement());
+        for (CRTParser.StatementContext statement : statements) statement.parent = null;
+        return new Parsed(handedOut(statements), List.of(), assigned);
     }
 
-    /** The parser of the first, fast stage: SLL prediction, no tree, it gives up at the first error. */
+    /** A parser with SLL prediction that builds no tree and gives up at the first error. */
     static CRTParser checkingParser(TokenStream tokens, ParseClock clock) {
         CRTParser parser = clock.parser(tokens);
         GreedyOperators.install(parser);
@@ -122,50 +102,21 @@ public final class ScriptParser {
         return parser;
     }
 
-    /** The statements of a script known to be free of syntax errors, parsed as they are asked for. */
-    private static final class Statements implements Iterator<CRTParser.StatementContext> {
-        private final CRTParser parser;
+    /** The statements in order, each let go once handed out, so that a run tree can be collected. */
+    private static Iterator<CRTParser.StatementContext> handedOut(List<CRTParser.StatementContext> statements) {
+        return new Iterator<>() {
+            private int next;
 
-        /** {@code mode} is the prediction that sufficed for the whole script in the check. */
-        Statements(CharStream chars, PredictionMode mode, ParseClock clock) {
-            chars.seek(0);
-            CRTLexer lexer = clock.lexer(chars);
-            lexer.removeErrorListeners();
-            lexer.setTokenFactory(new SharedTextTokens());
-            // Unbuffered: tokens no longer needed by a statement's tree are garbage once it has run.
-            parser = clock.parser(new UnbufferedTokenStream<>(lexer));
-            GreedyOperators.install(parser);
-            parser.removeErrorListeners();
-            parser.setTrimParseTree(true);
-            parser.getInterpreter().setPredictionMode(mode);
-            parser.setErrorHandler(new BailErrorStrategy());
-        }
+            @Override
+            public boolean hasNext() { return next < statements.size(); }
 
-        @Override
-        public boolean hasNext() { return parser.getInputStream().LA(1) != Token.EOF; }
-
-        @Override
-        public CRTParser.StatementContext next() { return parser.statement(); }
-    }
-
-    /**
-     * Tokens whose text is set once and shared: names through a table, keywords and operators
-     * from the vocabulary. Evaluating them in loops then neither copies characters nor rehashes.
-     */
-    private static final class SharedTextTokens extends CommonTokenFactory {
-        private final Map<String, String> names = new HashMap<>();
-
-        @Override
-        public CommonToken create(Pair<TokenSource, CharStream> source, int type, String text, int channel,
-                int start, int stop, int line, int charPositionInLine) {
-            CommonToken token = super.create(source, type, text, channel, start, stop, line, charPositionInLine);
-            if (type == CRTLexer.IDENT || type == CRTLexer.NAME) {
-                token.setText(names.computeIfAbsent(token.getText(), n -> n));
-            } else if (type > 0 && type < FIXED_TEXT.length && FIXED_TEXT[type] != null) {
-                token.setText(FIXED_TEXT[type]);
+            @Override
+            public CRTParser.StatementContext next() {
+                CRTParser.StatementContext statement = statements.get(next);
+                statements.set(next++, null);
+                return statement;
             }
-            return token;
-        }
+        };
     }
 
     private static void reportLexicalMistakes(CommonTokenStream tokens, SyntaxErrors errors) {

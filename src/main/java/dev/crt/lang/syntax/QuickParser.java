@@ -1,0 +1,658 @@
+package dev.crt.lang.syntax;
+
+import static dev.crt.lang.parser.CRTParser.*;
+
+import dev.crt.lang.parser.CRTLexer;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.HashSet;
+import java.util.Iterator;
+import java.util.List;
+import java.util.NoSuchElementException;
+import java.util.Set;
+import org.antlr.v4.runtime.ParserRuleContext;
+import org.antlr.v4.runtime.tree.ParseTree;
+
+/**
+ * Reads a script that has no mistakes in one pass, by hand, into the parse tree the generated
+ * parser builds for it (the same contexts, children, tokens and positions), several times faster
+ * than ANTLR's lexer and adaptive prediction. At the first lexical or syntax mistake it gives up,
+ * and the generated parser, with its error recovery and messages for people, reads the script.
+ *
+ * <p>The decisions are those of the grammar as the generated parser takes them: an operator
+ * continues the expression before it whenever its precedence allows (see {@link GreedyOperators}),
+ * a {@code <} starts a modifier list exactly when a modifier's name follows it, and an identifier
+ * followed by {@code =} starts an assignment.
+ */
+final class QuickParser {
+    /** Thrown at the first mistake: the generated parser takes over. */
+    private static final class GiveUp extends RuntimeException {
+        GiveUp() { super(null, null, false, false); }
+    }
+
+    private static final GiveUp GIVE_UP = new GiveUp();
+    private static final String[] FIXED_TEXT = new String[CRTLexer.VOCABULARY.getMaxTokenType() + 1];
+    // Templates the labelled contexts copy from (the generated constructors take one); never changed.
+    private static final StatementContext STATEMENT = new StatementContext();
+    private static final ExpressionContext EXPRESSION = new ExpressionContext();
+    private static final OperationContext OPERATION = new OperationContext();
+    private static final ArithmeticContext ARITHMETIC = new ArithmeticContext();
+    private static final PrimaryContext PRIMARY = new PrimaryContext();
+
+    static {
+        for (int type = 1; type < FIXED_TEXT.length; type++) {
+            String literal = CRTLexer.VOCABULARY.getLiteralName(type);
+            if (literal != null) FIXED_TEXT[type] = literal.substring(1, literal.length() - 1);
+        }
+    }
+
+    // The trees of the top-level statements that start within this many tokens are kept from the
+    // reading. A later statement's tree (in a script of hundreds of thousands of statements) is
+    // let go once the reading has checked it and built again from the tokens when it is to run,
+    // so that such a script never holds all of its tree, and its tokens go as its statements run.
+    private static final int KEPT_TOKENS = 1 << 20;
+
+    /** A script read without mistakes: its top-level statements, handed out in order, and the names it assigns. */
+    static final class Result implements Iterator<StatementContext> {
+        private final QuickParser parser;
+        private final List<StatementContext> kept;
+        private final int[] starts;
+        private final Set<String> assignedNames;
+        private int next;
+
+        private Result(QuickParser parser, List<StatementContext> kept, int[] starts, Set<String> assignedNames) {
+            this.parser = parser;
+            this.kept = kept;
+            this.starts = starts;
+            this.assignedNames = assignedNames;
+        }
+
+        /** Every name the script assigns or binds as a macro parameter. */
+        Set<String> assignedNames() { return assignedNames; }
+
+        @Override
+        public boolean hasNext() { return next < starts.length; }
+
+        @Override
+        public StatementContext next() {
+            if (!hasNext()) throw new NoSuchElementException();
+            StatementContext statement = kept.get(next);
+            if (statement == null) {
+                parser.p = starts[next];
+                statement = parser.statement(null);
+            } else {
+                kept.set(next, null);
+            }
+            // The statement's tokens are leaves of its tree now; the reader needs them no more.
+            int end = next + 1 < starts.length ? starts[next + 1] : parser.count - 1;
+            Arrays.fill(parser.tokens, starts[next], end, null);
+            next++;
+            return statement;
+        }
+    }
+
+    private final String text;
+    // Null once the reading is done: a statement built again when it runs was already timed.
+    private ParseClock clock;
+    private ScriptToken[] tokens = new ScriptToken[1024];
+    private int count;
+    private int p;
+    // Names by their characters, so that each distinct name is one String however often it occurs.
+    private String[] names = new String[256];
+
+    private QuickParser(String text, ParseClock clock) {
+        this.text = text;
+        this.clock = clock;
+    }
+
+    /**
+     * The parse of {@code text}, or null when it has a mistake (or characters beyond the Basic
+     * Multilingual Plane, whose code-point positions the generated lexer counts).
+     */
+    static Result parse(String text, ParseClock clock) { return parse(text, clock, KEPT_TOKENS); }
+
+    /** The same, keeping from the reading the trees of the statements that start within {@code keptTokens} tokens. */
+    static Result parse(String text, ParseClock clock, int keptTokens) {
+        QuickParser parser = new QuickParser(text, clock);
+        try {
+            if (!parser.lex()) return null;
+            List<StatementContext> kept = new ArrayList<>();
+            int[] starts = new int[16];
+            int n = 0;
+            while (parser.type() != EOF) {
+                if (n == starts.length) starts = Arrays.copyOf(starts, n * 2);
+                int start = parser.p;
+                starts[n++] = start;
+                StatementContext statement = parser.statement(null);
+                kept.add(start < keptTokens ? statement : null);
+            }
+            parser.clock = null;
+            return new Result(parser, kept, Arrays.copyOf(starts, n), parser.assignedNames());
+        } catch (GiveUp mistake) {
+            return null;
+        }
+    }
+
+    // ---- lexer ----------------------------------------------------------------------------------
+
+    private boolean lex() {
+        String s = text;
+        int n = s.length();
+        int i = 0;
+        int line = 1;
+        int lineStart = 0;
+        while (true) {
+            char c = 0;
+            while (i < n) {
+                c = s.charAt(i);
+                if (c == '\n') {
+                    line++;
+                    lineStart = ++i;
+                } else if (c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\uFEFF') {
+                    i++;
+                } else if (c == '-' && i + 1 < n && s.charAt(i + 1) == '-') {
+                    for (i += 2; i < n && (c = s.charAt(i)) != '\n' && c != '\r'; i++) {
+                        if (Character.isSurrogate(c)) return false;
+                    }
+                } else {
+                    break;
+                }
+            }
+            if (i >= n) {
+                add(new ScriptToken(s, null, EOF, n, n - 1, line, n - lineStart, count));
+                return true;
+            }
+            int start = i;
+            int type;
+            String fixed = null;
+            char next = i + 1 < n ? s.charAt(i + 1) : 0;
+            switch (c) {
+                case '-' -> type = next == '>' ? ARROW : MINUS;
+                case '<' -> type = next == '=' ? LE : LT;
+                case '>' -> type = next == '=' ? GE : GT;
+                case '=' -> type = next == '=' ? EQ : ASSIGN;
+                case '!' -> type = next == '=' ? NE : BANG;
+                case '&' -> type = next == '&' ? AND : 0;
+                case '|' -> type = next == '|' ? OR : 0;
+                case '+' -> type = PLUS;
+                case '*' -> type = STAR;
+                case '/' -> type = SLASH;
+                case '%' -> type = PERCENT;
+                case '^' -> type = CARET;
+                case '?' -> type = QUESTION;
+                case ':' -> type = COLON;
+                case ',' -> type = COMMA;
+                case '(' -> type = LPAREN;
+                case ')' -> type = RPAREN;
+                case '{' -> type = LBRACE;
+                case '}' -> type = RBRACE;
+                case '[' -> type = LBRACKET;
+                case ']' -> type = RBRACKET;
+                default -> type = -1;
+            }
+            if (type == 0) return false;
+            if (type > 0) {
+                fixed = FIXED_TEXT[type];
+                i += fixed.length();
+            } else if (c == '"') {
+                for (i++;; i++) {
+                    if (i >= n) return false;
+                    c = s.charAt(i);
+                    if (c == '"') break;
+                    if (c == '\r' || c == '\n' || Character.isSurrogate(c)) return false;
+                    if (c == '\\') {
+                        if (i + 1 >= n) return false;
+                        char escaped = s.charAt(++i);
+                        if (escaped == '\r' || escaped == '\n' || Character.isSurrogate(escaped)) return false;
+                    }
+                }
+                i++;
+                type = STRING;
+            } else if (isDigit(c) || (c == '.' && isDigit(next))) {
+                while (i < n && isDigit(s.charAt(i))) i++;
+                type = INT;
+                if (i < n && s.charAt(i) == '.') {
+                    i++;
+                    while (i < n && isDigit(s.charAt(i))) i++;
+                    type = FLOAT;
+                }
+                if (i < n && (s.charAt(i) == 'e' || s.charAt(i) == 'E')) {
+                    int j = i + 1;
+                    if (j < n && (s.charAt(j) == '+' || s.charAt(j) == '-')) j++;
+                    // An exponent without digits is a mistake the compiler reports ("1e", "2.5e-").
+                    if (j >= n || !isDigit(s.charAt(j))) return false;
+                    while (j < n && isDigit(s.charAt(j))) j++;
+                    i = j;
+                    type = FLOAT;
+                }
+            } else if ((c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z')) {
+                i++;
+                while (i < n && isNameCharacter(s.charAt(i))) i++;
+                fixed = name(start, i);
+                type = keyword(fixed, c >= 'a');
+            } else {
+                return false;
+            }
+            ScriptToken token = new ScriptToken(s, fixed, type, start, i - 1, line, start - lineStart, count);
+            add(token);
+            clock.tick(token);
+        }
+    }
+
+    private static boolean isDigit(char c) { return c >= '0' && c <= '9'; }
+
+    private static boolean isNameCharacter(char c) {
+        return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_';
+    }
+
+    private static int keyword(String word, boolean lowercase) {
+        if (!lowercase) {
+            return switch (word) {
+                case "Settings" -> SETTINGS;
+                case "Scene" -> SCENE;
+                case "Macro" -> MACRO;
+                default -> NAME;
+            };
+        }
+        return switch (word) {
+            case "scale" -> SCALE;
+            case "translate" -> TRANSLATE;
+            case "rotate" -> ROTATE;
+            case "true" -> TRUE;
+            case "false" -> FALSE;
+            case "while" -> WHILE;
+            case "if" -> IF;
+            case "else" -> ELSE;
+            default -> IDENT;
+        };
+    }
+
+    /** The one String of the name at [start, end), from an open-addressing table. */
+    private String name(int start, int end) {
+        int hash = 0;
+        for (int i = start; i < end; i++) hash = 31 * hash + text.charAt(i);
+        int mask = names.length - 1;
+        for (int slot = mix(hash) & mask;; slot = (slot + 1) & mask) {
+            String known = names[slot];
+            if (known == null) {
+                String name = text.substring(start, end);
+                names[slot] = name;
+                if (++nameCount * 2 > names.length) growNames();
+                return name;
+            }
+            if (known.length() == end - start && text.regionMatches(start, known, 0, end - start)) return known;
+        }
+    }
+
+    private int nameCount;
+
+    private static int mix(int hash) { return hash ^ (hash >>> 16); }
+
+    private void growNames() {
+        String[] old = names;
+        names = new String[old.length * 2];
+        int mask = names.length - 1;
+        for (String name : old) {
+            if (name == null) continue;
+            int slot = mix(name.hashCode()) & mask;
+            while (names[slot] != null) slot = (slot + 1) & mask;
+            names[slot] = name;
+        }
+    }
+
+    private void add(ScriptToken token) {
+        if (count == tokens.length) tokens = Arrays.copyOf(tokens, count * 2);
+        tokens[count++] = token;
+    }
+
+    /** Names assigned ({@code name =}) or bound as macro parameters ({@code Macro (a, b)}). */
+    private Set<String> assignedNames() {
+        Set<String> assigned = new HashSet<>();
+        for (int i = 0; i + 1 < count; i++) {
+            int type = tokens[i].getType();
+            if (type == IDENT && tokens[i + 1].getType() == ASSIGN) {
+                assigned.add(tokens[i].getText());
+            } else if (type == MACRO && tokens[i + 1].getType() == LPAREN) {
+                for (int j = i + 2; j < count && tokens[j].getType() != RPAREN; j++) {
+                    if (tokens[j].getType() == IDENT) assigned.add(tokens[j].getText());
+                }
+            }
+        }
+        return assigned;
+    }
+
+    // ---- parser ---------------------------------------------------------------------------------
+    //
+    // Children are kept in immutable lists of their exact size (the tree of a written-out scene is
+    // mostly one-child contexts around each number, and all of it lives until the scene is built):
+    // a fixed shape is listed when its last child is read, a variable one collected and copied.
+
+    private int type() { return tokens[p].getType(); }
+
+    private int typeAfter() { return tokens[p + 1].getType(); }
+
+    /** Starts {@code ctx} under {@code parent} at the current token. */
+    private <C extends ParserRuleContext> C open(C ctx, ParserRuleContext parent) {
+        ctx.parent = parent;
+        ctx.start = tokens[p];
+        return ctx;
+    }
+
+    /** Ends {@code ctx} at the last token read, with {@code children}. */
+    private <C extends ParserRuleContext> C close(C ctx, List<ParseTree> children) {
+        ctx.stop = tokens[p - 1];
+        ctx.children = children;
+        return ctx;
+    }
+
+    /** The current token, read as a child of {@code ctx}. */
+    private ScriptToken take(ParserRuleContext ctx) {
+        ScriptToken token = tokens[p++];
+        if (clock != null) clock.tick(token);
+        token.parent = ctx;
+        return token;
+    }
+
+    private ScriptToken take(ParserRuleContext ctx, int expected) {
+        if (type() != expected) throw GIVE_UP;
+        return take(ctx);
+    }
+
+    private static boolean startsStatement(int type) {
+        return type == SETTINGS || type == SCENE || type == WHILE || type == IF || startsExpression(type);
+    }
+
+    private static boolean startsExpression(int type) {
+        return switch (type) {
+            case MACRO, TRUE, FALSE, PLUS, MINUS, BANG, LPAREN, LBRACKET, FLOAT, INT, STRING, IDENT, NAME -> true;
+            default -> false;
+        };
+    }
+
+    private static boolean startsAttribute(int type) {
+        return type == IDENT || type == SCALE || type == ROTATE || type == TRANSLATE;
+    }
+
+    private static boolean isModifier(int type) { return type == SCALE || type == ROTATE || type == TRANSLATE; }
+
+    private StatementContext statement(ParserRuleContext parent) {
+        switch (type()) {
+            case SETTINGS -> {
+                SettingsBlockContext c = open(new SettingsBlockContext(STATEMENT), parent);
+                List<ParseTree> children = new ArrayList<>();
+                children.add(take(c));
+                children.add(take(c, LBRACE));
+                while (startsAttribute(type())) children.add(attribute(c));
+                children.add(take(c, RBRACE));
+                return close(c, List.copyOf(children));
+            }
+            case SCENE -> {
+                SceneBlockContext c = open(new SceneBlockContext(STATEMENT), parent);
+                List<ParseTree> children = new ArrayList<>();
+                children.add(take(c));
+                children.add(take(c, LBRACE));
+                while (startsStatement(type())) children.add(statement(c));
+                children.add(take(c, RBRACE));
+                return close(c, List.copyOf(children));
+            }
+            case WHILE -> {
+                WhileLoopContext c = open(new WhileLoopContext(STATEMENT), parent);
+                ScriptToken loop = take(c), open = take(c, LPAREN);
+                ExpressionContext condition = expression(c);
+                ScriptToken close = take(c, RPAREN);
+                return close(c, List.of(loop, open, condition, close, block(c)));
+            }
+            case IF -> {
+                IfStatementContext c = open(new IfStatementContext(STATEMENT), parent);
+                return close(c, List.of(ifChain(c)));
+            }
+            default -> {
+                if (!startsExpression(type())) throw GIVE_UP;
+                ExpressionStatementContext c = open(new ExpressionStatementContext(STATEMENT), parent);
+                return close(c, List.of(expression(c)));
+            }
+        }
+    }
+
+    private IfChainContext ifChain(ParserRuleContext parent) {
+        IfChainContext c = open(new IfChainContext(parent, -1), parent);
+        List<ParseTree> children = new ArrayList<>(7);
+        children.add(take(c, IF));
+        children.add(take(c, LPAREN));
+        children.add(expression(c));
+        children.add(take(c, RPAREN));
+        children.add(block(c));
+        if (type() == ELSE) {
+            children.add(take(c));
+            if (type() == IF) children.add(ifChain(c));
+            else if (type() == LBRACE) children.add(block(c));
+            else throw GIVE_UP;
+        }
+        return close(c, List.copyOf(children));
+    }
+
+    private BlockContext block(ParserRuleContext parent) {
+        BlockContext c = open(new BlockContext(parent, -1), parent);
+        List<ParseTree> children = new ArrayList<>();
+        children.add(take(c, LBRACE));
+        while (startsStatement(type())) children.add(statement(c));
+        children.add(take(c, RBRACE));
+        return close(c, List.copyOf(children));
+    }
+
+    private AttributeContext attribute(ParserRuleContext parent) {
+        AttributeContext c = open(new AttributeContext(parent, -1), parent);
+        ScriptToken key = take(c), arrow = take(c, ARROW);
+        c.key = key;
+        return close(c, List.of(key, arrow, expression(c)));
+    }
+
+    private ExpressionContext expression(ParserRuleContext parent) {
+        if (type() == IDENT && typeAfter() == ASSIGN) {
+            AssignmentContext c = open(new AssignmentContext(EXPRESSION), parent);
+            ScriptToken name = take(c), assign = take(c);
+            return close(c, List.of(name, assign, expression(c)));
+        }
+        PlainExpressionContext c = open(new PlainExpressionContext(EXPRESSION), parent);
+        return close(c, List.of(operation(c, 0)));
+    }
+
+    /** The rule {@code operation} entered with precedence {@code min}, as the generated parser does. */
+    private OperationContext operation(ParserRuleContext parent, int min) {
+        OperationContext left = open(new ArithmeticOperationContext(OPERATION), parent);
+        close(left, List.of(arithmetic(left, 0)));
+        while (true) {
+            OperationContext c;
+            switch (type()) {
+                case LE, GE, LT, GT, EQ, NE -> {
+                    if (min > 4) return left;
+                    ComparisonContext k = grow(new ComparisonContext(OPERATION), left, parent);
+                    ScriptToken op = take(k);
+                    k.op = op;
+                    c = close(k, List.of(left, op, operation(k, 5)));
+                }
+                case AND -> {
+                    if (min > 3) return left;
+                    c = grow(new AndContext(OPERATION), left, parent);
+                    ScriptToken op = take(c);
+                    close(c, List.of(left, op, operation(c, 4)));
+                }
+                case OR -> {
+                    if (min > 2) return left;
+                    c = grow(new OrContext(OPERATION), left, parent);
+                    ScriptToken op = take(c);
+                    close(c, List.of(left, op, operation(c, 3)));
+                }
+                case QUESTION -> {
+                    if (min > 1) return left;
+                    c = grow(new ConditionalContext(OPERATION), left, parent);
+                    ScriptToken question = take(c);
+                    OperationContext yes = operation(c, 0);
+                    ScriptToken colon = take(c, COLON);
+                    close(c, List.of(left, question, yes, colon, operation(c, 1)));
+                }
+                default -> {
+                    return left;
+                }
+            }
+            left = c;
+        }
+    }
+
+    /** Makes {@code ctx}, an operator's context, the parent of {@code left}, as the left recursion does. */
+    private static <C extends ParserRuleContext> C grow(C ctx, ParserRuleContext left, ParserRuleContext parent) {
+        ctx.parent = parent;
+        ctx.start = left.start;
+        left.parent = ctx;
+        return ctx;
+    }
+
+    /** The rule {@code arithmetic} entered with precedence {@code min}. */
+    private ArithmeticContext arithmetic(ParserRuleContext parent, int min) {
+        ArithmeticContext left;
+        switch (type()) {
+            case PLUS, MINUS -> {
+                SignContext s = open(new SignContext(ARITHMETIC), parent);
+                ScriptToken op = take(s);
+                s.op = op;
+                left = close(s, List.of(op, arithmetic(s, 5)));
+            }
+            case BANG -> {
+                left = open(new NotContext(ARITHMETIC), parent);
+                ScriptToken op = take(left);
+                close(left, List.of(op, arithmetic(left, 4)));
+            }
+            default -> {
+                left = open(new AtomContext(ARITHMETIC), parent);
+                close(left, List.of(primary(left)));
+            }
+        }
+        while (true) {
+            ArithmeticContext c;
+            switch (type()) {
+                case STAR, SLASH, PERCENT -> {
+                    if (min > 3) return left;
+                    MultiplicativeContext m = grow(new MultiplicativeContext(ARITHMETIC), left, parent);
+                    ScriptToken op = take(m);
+                    m.op = op;
+                    c = close(m, List.of(left, op, arithmetic(m, 4)));
+                }
+                case PLUS, MINUS, CARET -> {
+                    if (min > 2) return left;
+                    AdditiveContext a = grow(new AdditiveContext(ARITHMETIC), left, parent);
+                    ScriptToken op = take(a);
+                    a.op = op;
+                    c = close(a, List.of(left, op, arithmetic(a, 3)));
+                }
+                case LBRACKET -> {
+                    c = grow(new IndexContext(ARITHMETIC), left, parent);
+                    ScriptToken open = take(c);
+                    ExpressionContext index = expression(c);
+                    close(c, List.of(left, open, index, take(c, RBRACKET)));
+                }
+                case LPAREN -> {
+                    c = grow(new CallContext(ARITHMETIC), left, parent);
+                    List<ParseTree> children = new ArrayList<>(8);
+                    children.add(left);
+                    children.add(take(c));
+                    if (type() != RPAREN) {
+                        children.add(expression(c));
+                        while (type() == COMMA) {
+                            children.add(take(c));
+                            children.add(expression(c));
+                        }
+                    }
+                    children.add(take(c, RPAREN));
+                    close(c, List.copyOf(children));
+                }
+                case LT -> {
+                    if (!isModifier(typeAfter())) return left;
+                    c = grow(new ModifiedContext(ARITHMETIC), left, parent);
+                    List<ParseTree> children = new ArrayList<>(8);
+                    children.add(left);
+                    children.add(take(c));
+                    children.add(modifier(c));
+                    while (type() == COMMA) {
+                        children.add(take(c));
+                        children.add(modifier(c));
+                    }
+                    children.add(take(c, GT));
+                    close(c, List.copyOf(children));
+                }
+                default -> {
+                    return left;
+                }
+            }
+            left = c;
+        }
+    }
+
+    private ModifierContext modifier(ParserRuleContext parent) {
+        if (!isModifier(type())) throw GIVE_UP;
+        ModifierContext c = open(new ModifierContext(parent, -1), parent);
+        ScriptToken kind = take(c);
+        c.kind = kind;
+        return close(c, List.of(kind, arithmetic(c, 0)));
+    }
+
+    private PrimaryContext primary(ParserRuleContext parent) {
+        PrimaryContext c;
+        switch (type()) {
+            case INT -> c = open(new IntLiteralContext(PRIMARY), parent);
+            case FLOAT -> c = open(new FloatLiteralContext(PRIMARY), parent);
+            case STRING -> c = open(new StringLiteralContext(PRIMARY), parent);
+            case TRUE, FALSE -> c = open(new BooleanLiteralContext(PRIMARY), parent);
+            case IDENT -> c = open(new VariableContext(PRIMARY), parent);
+            case NAME -> {
+                c = open(new ObjectContext(PRIMARY), parent);
+                List<ParseTree> children = new ArrayList<>();
+                children.add(take(c));
+                children.add(take(c, LBRACE));
+                while (startsAttribute(type())) children.add(attribute(c));
+                children.add(take(c, RBRACE));
+                return close(c, List.copyOf(children));
+            }
+            case MACRO -> {
+                c = open(new MacroContext(PRIMARY), parent);
+                List<ParseTree> children = new ArrayList<>();
+                children.add(take(c));
+                children.add(take(c, LPAREN));
+                if (type() == IDENT) {
+                    children.add(take(c));
+                    while (type() == COMMA) {
+                        children.add(take(c));
+                        children.add(take(c, IDENT));
+                    }
+                }
+                children.add(take(c, RPAREN));
+                children.add(take(c, LBRACE));
+                while (startsStatement(type())) children.add(statement(c));
+                children.add(take(c, RBRACE));
+                return close(c, List.copyOf(children));
+            }
+            case LBRACKET -> {
+                c = open(new ListContext(PRIMARY), parent);
+                List<ParseTree> children = new ArrayList<>();
+                children.add(take(c));
+                if (type() != RBRACKET) {
+                    children.add(expression(c));
+                    while (type() == COMMA) {
+                        children.add(take(c));
+                        children.add(expression(c));
+                    }
+                }
+                children.add(take(c, RBRACKET));
+                return close(c, List.copyOf(children));
+            }
+            case LPAREN -> {
+                c = open(new ParenthesizedContext(PRIMARY), parent);
+                ScriptToken open = take(c);
+                ExpressionContext inner = expression(c);
+                return close(c, List.of(open, inner, take(c, RPAREN)));
+            }
+            default -> throw GIVE_UP;
+        }
+        // A literal or a variable: one token.
+        return close(c, List.of(take(c)));
+    }
+}
