@@ -81,6 +81,7 @@ final class StudioWindow implements StudioModel.Listener {
     private final ConsolePanel console = new ConsolePanel();
     private final LiveDock live = new LiveDock(model, editors::get, console);
     private final RenderSelection renderSelection = new RenderSelection(renderView);
+    private final RenderFreshness renderFreshness = new RenderFreshness(renderView);
     private final JLabel caretStatus = new JLabel("–");
     private final JLabel renderStatus = new JLabel(" ");
     private final JProgressBar progress = new JProgressBar(0, 1000);
@@ -130,6 +131,7 @@ final class StudioWindow implements StudioModel.Listener {
         model.addListener(recovery);
         model.addListener(this);
         model.addListener(renderSelection);
+        model.addListener(renderFreshness);
         buildActions();
         buildPanels();
         frame.setJMenuBar(buildMenus());
@@ -790,7 +792,8 @@ final class StudioWindow implements StudioModel.Listener {
         renderStatus.setText("rendering " + d.name() + "…");
         RenderJob[] self = new RenderJob[1];
         Shading shading = originalShadingItem.isSelected() ? Shading.ORIGINAL : null;
-        self[0] = new RenderJob(d.source(), compiled, shading, session, new RenderJob.Listener() {
+        dev.crt.lang.Source source = d.source();
+        self[0] = new RenderJob(source, compiled, shading, session, new RenderJob.Listener() {
             @Override public void picture(java.awt.image.BufferedImage image, boolean coarse) {
                 if (job != self[0]) return;
                 renderView.show(image);
@@ -811,6 +814,7 @@ final class StudioWindow implements StudioModel.Listener {
                 renderView.show(r.picture());
                 objects.rendered(r);
                 renderSelection.rendered(d, r);
+                renderFreshness.rendered(d, source.text());
                 progress.setVisible(false);
                 RenderStats stats = r.renderer().stats();
                 long end = System.nanoTime();
