@@ -371,9 +371,9 @@ final class AnimationPanel extends JPanel implements StudioModel.Listener {
                 update(job);
             }
 
+            @Override public void raysTraced(int frame, long rays) { throughput.add(rays, System.nanoTime()); }
+
             @Override public void written(AnimationRun.Frame frame, FrameBuffer image, Settings settings, RenderStats stats) {
-                long end = System.nanoTime();
-                throughput.record(stats.totalRays(), end - stats.renderNanos(), end);
                 BufferedImage picture = picture(image, settings.outputGamma());
                 SwingUtilities.invokeLater(() -> {
                     if (run != job) return;

@@ -793,7 +793,7 @@ final class StudioWindow implements StudioModel.Listener {
         RenderJob[] self = new RenderJob[1];
         Shading shading = originalShadingItem.isSelected() ? Shading.ORIGINAL : null;
         dev.crt.lang.Source source = d.source();
-        self[0] = new RenderJob(source, compiled, shading, session, new RenderJob.Listener() {
+        self[0] = new RenderJob(source, compiled, shading, session, throughput, new RenderJob.Listener() {
             @Override public void picture(java.awt.image.BufferedImage image, boolean coarse) {
                 if (job != self[0]) return;
                 renderView.show(image);
@@ -817,8 +817,6 @@ final class StudioWindow implements StudioModel.Listener {
                 renderFreshness.rendered(d, source.text());
                 progress.setVisible(false);
                 RenderStats stats = r.renderer().stats();
-                long end = System.nanoTime();
-                throughput.record(stats.totalRays(), end - stats.renderNanos(), end);
                 Settings s = r.scene().settings();
                 String summary = String.format("%d×%d in %.2f s, %.1f Mrays/s, first picture after %d ms", s.width(), s.height(),
                         r.totalNanos() / 1e9, stats.megaRaysPerSecond(), r.firstPictureNanos() / 1_000_000);
