@@ -71,6 +71,8 @@ final class AnimationPanel extends JPanel implements StudioModel.Listener {
     private final JToggleButton playButton = new JToggleButton("Play");
     private final JCheckBox loop = new JCheckBox("Loop", true);
     private final JButton exportGif = new JButton("Export GIF…");
+    /** Whether an exported GIF loops forever (the NETSCAPE2.0 extension) or plays once. */
+    private final JCheckBox gifLoop = new JCheckBox("Loop GIF", true);
     private final JButton exportPng = new JButton("Export PNGs…");
     private final FrameView view = new FrameView();
     private final Timer player;
@@ -149,10 +151,13 @@ final class AnimationPanel extends JPanel implements StudioModel.Listener {
         named(playButton, "animPlay", "Play");
         named(loop, "animLoop", "Loop");
         named(exportGif, "animExportGif", "Export GIF");
+        named(gifLoop, "animGifLoop", "Loop the exported GIF");
+        gifLoop.setToolTipText("On: the GIF plays again and again; off: it plays once and stops on its last frame");
         named(exportPng, "animExportPng", "Export PNG sequence");
         buttons.add(playButton);
         buttons.add(loop);
         buttons.add(exportGif);
+        buttons.add(gifLoop);
         buttons.add(exportPng);
         slider.setName("animSlider");
         slider.getAccessibleContext().setAccessibleName("Scrub frames");
@@ -530,9 +535,11 @@ final class AnimationPanel extends JPanel implements StudioModel.Listener {
         double rate = (Double) fps.getValue();
         List<Path> files = list.stream().map(Map.Entry::getValue).toList();
         Path gif = target;
+        boolean loops = gifLoop.isSelected();
         exporting("writing " + gif.getFileName() + "…", () -> {
-            GifAssembly.write(gif, files, rate);
-            return String.format(Locale.ROOT, "wrote %s (%d frames at %s fps, looping)", gif, files.size(), rate);
+            GifAssembly.write(gif, files, rate, loops);
+            return String.format(Locale.ROOT, "wrote %s (%d frames at %s fps, %s)", gif, files.size(), rate,
+                    loops ? "looping" : "played once");
         });
     }
 
