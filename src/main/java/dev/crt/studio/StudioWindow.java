@@ -445,7 +445,8 @@ final class StudioWindow implements StudioModel.Listener {
             editor.area().getInputMap().put(key, "crt." + n);
             editor.area().getActionMap().put("crt." + n, actions.get(n));
         }
-        editor.area().setTransferHandler(new FileDropHandler(editor.area().getTransferHandler(), this::openAll));
+        editor.area().setTransferHandler(new FileDropHandler(objects.paletteDrop(editor.area(), editor.area().getTransferHandler()),
+                this::openAll));
         editor.area().addCaretListener(e -> showCaret(editor));
         tabs.addTab(d.name(), editor);
         tabs.setSelectedComponent(editor);
