@@ -50,6 +50,9 @@ public final class AnimationRun {
         /** {@code done} of {@code of} pixels of frame {@code frame} are traced; called often. */
         default void rendering(int frame, long done, long of) {}
 
+        /** A render thread of frame {@code frame} traced {@code rays} more rays (see {@link RenderMonitor#raysTraced}). */
+        default void raysTraced(int frame, long rays) {}
+
         /**
          * Frame {@code frame} is in its file; {@code image} is its picture in linear light, with the
          * settings it was made with and what tracing it cost.
@@ -132,6 +135,9 @@ public final class AnimationRun {
             RenderMonitor monitor = new RenderMonitor() {
                 @Override
                 public void progress(long done, long total) { progress.rendering(frame.number(), done, total); }
+
+                @Override
+                public void raysTraced(long rays) { progress.raysTraced(frame.number(), rays); }
 
                 @Override
                 public boolean isCancelled() { return cancel.getAsBoolean() || stopping.get(); }

@@ -8,12 +8,17 @@ import java.io.IOException;
 import java.nio.file.Path;
 import java.util.List;
 
-/** Puts the frame files of an animation into one looping GIF. */
+/** Puts the frame files of an animation into one GIF, looping or played once. */
 public final class GifAssembly {
     private GifAssembly() {}
 
     /** Writes {@code frames} (8-bit .png or .ppm files, in order) to {@code gif}, atomically, looping at {@code fps}. */
     public static void write(Path gif, List<Path> frames, double fps) throws IOException {
+        write(gif, frames, fps, true);
+    }
+
+    /** As {@link #write(Path, List, double)}; {@code loop} false writes a GIF that plays once. */
+    public static void write(Path gif, List<Path> frames, double fps, boolean loop) throws IOException {
         GifWriter.Frames source = new GifWriter.Frames() {
             @Override
             public int count() { return frames.size(); }
@@ -21,7 +26,7 @@ public final class GifAssembly {
             @Override
             public RgbImage read(int index) throws IOException { return rgb(PictureFiles.read(frames.get(index))); }
         };
-        GifWriter.write(gif, source, fps);
+        GifWriter.write(gif, source, fps, loop);
     }
 
     private static RgbImage rgb(Picture picture) {

@@ -26,7 +26,7 @@ import javax.imageio.stream.ImageOutputStream;
 import javax.imageio.stream.MemoryCacheImageOutputStream;
 
 /**
- * Writes an animated GIF that loops forever. All frames share one palette chosen by median cut over
+ * Writes an animated GIF that loops forever (or plays once). All frames share one palette chosen by median cut over
  * every frame and are dithered with Floyd–Steinberg; each frame after the first stores only the
  * rectangle that changed, with unchanged pixels transparent, which keeps the file small.
  */
@@ -50,6 +50,14 @@ public final class GifWriter {
      * @throws IOException when a frame cannot be read, frames differ in size, or {@code out} cannot be written
      */
     public static void write(Path out, Frames frames, double fps) throws IOException {
+        write(out, frames, fps, true);
+    }
+
+    /**
+     * As {@link #write(Path, Frames, double)}; {@code loop} false leaves out the NETSCAPE2.0
+     * application extension, so viewers play the animation once and stop on its last frame.
+     */
+    public static void write(Path out, Frames frames, double fps, boolean loop) throws IOException {
         if (frames.count() < 1) throw new IllegalArgumentException("a GIF needs at least one frame");
         if (!(fps > 0)) throw new IllegalArgumentException("frames per second must be positive, got " + fps);
         Palette palette = choosePalette(frames);
@@ -58,7 +66,7 @@ public final class GifWriter {
         Path temp = dir.resolve("." + out.getFileName() + ".tmp-"
                 + Long.toHexString(ThreadLocalRandom.current().nextLong() & Long.MAX_VALUE));
         try {
-            encode(temp, frames, palette, fps);
+            encode(temp, frames, palette, fps, loop);
             try {
                 Files.move(temp, out, StandardCopyOption.ATOMIC_MOVE, StandardCopyOption.REPLACE_EXISTING);
             } catch (AtomicMoveNotSupportedException e) {
@@ -80,7 +88,7 @@ public final class GifWriter {
         return quantizer.palette(COLOURS);
     }
 
-    private static void encode(Path temp, Frames frames, Palette palette, double fps) throws IOException {
+    private static void encode(Path temp, Frames frames, Palette palette, double fps, boolean loop) throws IOException {
         Iterator<ImageWriter> writers = ImageIO.getImageWritersByFormatName("gif");
         if (!writers.hasNext()) throw new IOException("this Java runtime has no GIF writer");
         ImageWriter writer = writers.next();
@@ -105,7 +113,7 @@ public final class GifWriter {
                         : Patch.changes(shown, indices, frame.width(), frame.height());
                 BufferedImage image = patch.image(i == 0 ? opaque : withUnchanged);
                 writer.writeToSequence(new IIOImage(image, null,
-                        frameMetadata(writer, image, patch, i == 0, delayCentiseconds(i, fps))), null);
+                        frameMetadata(writer, image, patch, i == 0, loop, delayCentiseconds(i, fps))), null);
                 shown = indices;
             }
             writer.endWriteSequence();
@@ -156,7 +164,7 @@ public final class GifWriter {
     }
 
     private static IIOMetadata frameMetadata(ImageWriter writer, BufferedImage image, Patch patch, boolean first,
-            int delay) throws IOException {
+            boolean loop, int delay) throws IOException {
         ImageWriteParam param = writer.getDefaultWriteParam();
         IIOMetadata metadata = writer.getDefaultImageMetadata(ImageTypeSpecifier.createFromRenderedImage(image), param);
         String format = metadata.getNativeMetadataFormatName();
@@ -181,14 +189,14 @@ public final class GifWriter {
         descriptor.setAttribute("imageHeight", Integer.toString(patch.height()));
         descriptor.setAttribute("interlaceFlag", "FALSE");
 
-        if (first) {
+        if (first && loop) {
             IIOMetadataNode extensions = child(root, "ApplicationExtensions");
-            IIOMetadataNode loop = new IIOMetadataNode("ApplicationExtension");
-            loop.setAttribute("applicationID", "NETSCAPE");
-            loop.setAttribute("authenticationCode", "2.0");
+            IIOMetadataNode netscape = new IIOMetadataNode("ApplicationExtension");
+            netscape.setAttribute("applicationID", "NETSCAPE");
+            netscape.setAttribute("authenticationCode", "2.0");
             // Sub-block 1 holds the loop count, little-endian; 0 loops forever.
-            loop.setUserObject(new byte[] {1, 0, 0});
-            extensions.appendChild(loop);
+            netscape.setUserObject(new byte[] {1, 0, 0});
+            extensions.appendChild(netscape);
         }
         metadata.setFromTree(format, root);
         return metadata;

@@ -17,6 +17,13 @@ public interface RenderMonitor {
      */
     default void tileDone(FrameBuffer image, int x0, int y0, int x1, int y1) {}
 
+    /**
+     * One render thread traced {@code rays} more rays (of every kind) since its last call: called once
+     * per tile and pass, before {@link #tileDone}, so a chart can show the throughput while the render
+     * runs. Summed over a finished render, these are {@link RenderStats#totalRays()}.
+     */
+    default void raysTraced(long rays) {}
+
     /** Polled often; a render that sees true stops within a fraction of a second. */
     default boolean isCancelled() { return false; }
 }

@@ -107,6 +107,7 @@ public final class Renderer {
             Runnable work = () -> {
                 double[] rgb = new double[3];
                 float[] pilot = new float[3];
+                long reported = 0;
                 int task;
                 while (!cancelled.get() && (task = nextTask.getAndIncrement()) < tiles * passes) {
                     boolean second = task >= tiles;
@@ -132,6 +133,9 @@ public final class Renderer {
                         }
                     }
                     if (adaptive && !second) pilots.countDown();
+                    long traced = tracer.primaryRays + tracer.shadowRays + tracer.reflectedRays + tracer.refractedRays;
+                    monitor.raysTraced(traced - reported);
+                    reported = traced;
                     monitor.tileDone(image, x0, y0, x1, y1);
                     monitor.progress(donePixels.addAndGet((long) (x1 - x0) * (y1 - y0)), total);
                 }

@@ -71,6 +71,8 @@ final class AnimationPanel extends JPanel implements StudioModel.Listener {
     private final JToggleButton playButton = new JToggleButton("Play");
     private final JCheckBox loop = new JCheckBox("Loop", true);
     private final JButton exportGif = new JButton("Export GIF…");
+    /** Whether an exported GIF loops forever (the NETSCAPE2.0 extension) or plays once. */
+    private final JCheckBox gifLoop = new JCheckBox("Loop GIF", true);
     private final JButton exportPng = new JButton("Export PNGs…");
     private final FrameView view = new FrameView();
     private final Timer player;
@@ -154,10 +156,13 @@ final class AnimationPanel extends JPanel implements StudioModel.Listener {
         named(playButton, "animPlay", "Play");
         named(loop, "animLoop", "Loop");
         named(exportGif, "animExportGif", "Export GIF");
+        named(gifLoop, "animGifLoop", "Loop the exported GIF");
+        gifLoop.setToolTipText("On: the GIF plays again and again; off: it plays once and stops on its last frame");
         named(exportPng, "animExportPng", "Export PNG sequence");
         buttons.add(playButton);
         buttons.add(loop);
         buttons.add(exportGif);
+        buttons.add(gifLoop);
         buttons.add(exportPng);
         slider.setName("animSlider");
         slider.getAccessibleContext().setAccessibleName("Scrub frames");
@@ -376,9 +381,9 @@ final class AnimationPanel extends JPanel implements StudioModel.Listener {
                 update(job);
             }
 
+            @Override public void raysTraced(int frame, long rays) { throughput.add(rays, System.nanoTime()); }
+
             @Override public void written(AnimationRun.Frame frame, FrameBuffer image, Settings settings, RenderStats stats) {
-                long end = System.nanoTime();
-                throughput.record(stats.totalRays(), end - stats.renderNanos(), end);
                 BufferedImage picture = picture(image, settings.outputGamma());
                 SwingUtilities.invokeLater(() -> {
                     if (run != job) return;
@@ -535,9 +540,11 @@ final class AnimationPanel extends JPanel implements StudioModel.Listener {
         double rate = (Double) fps.getValue();
         List<Path> files = list.stream().map(Map.Entry::getValue).toList();
         Path gif = target;
+        boolean loops = gifLoop.isSelected();
         exporting("writing " + gif.getFileName() + "…", () -> {
-            GifAssembly.write(gif, files, rate);
-            return String.format(Locale.ROOT, "wrote %s (%d frames at %s fps, looping)", gif, files.size(), rate);
+            GifAssembly.write(gif, files, rate, loops);
+            return String.format(Locale.ROOT, "wrote %s (%d frames at %s fps, %s)", gif, files.size(), rate,
+                    loops ? "looping" : "played once");
         });
     }
 

@@ -31,6 +31,10 @@ final class ObjectPanels implements StudioModel.Listener {
     private final StudioWindow window;
     private final NavigatorPanel navigator = new NavigatorPanel();
     private final PropertiesPanel properties = new PropertiesPanel();
+    /** The Insert menu's items, in its order; the palette shows the same. */
+    private static final List<String> ITEMS = List.of("Sphere", "Box", "Plane", "Cylinder", "Point light", "Parallel light",
+            "Spot light", "Camera");
+    private final PalettePanel palette = new PalettePanel(ITEMS, this::insertItem);
     private Node outline;
     private SourceMap map;
     private boolean ownCaret;
@@ -61,9 +65,18 @@ final class ObjectPanels implements StudioModel.Listener {
 
     PropertiesPanel properties() { return properties; }
 
+    PalettePanel palette() { return palette; }
+
     List<StudioPanel> panels() {
+        // The palette stacks behind Properties (a tab of the same place).
         return List.of(new StudioPanel("navigator", "Navigator", navigator, 0, 0, 0.24, 0.35),
-                new StudioPanel("properties", "Properties", properties, 0, 0.35, 0.24, 0.4));
+                new StudioPanel("properties", "Properties", properties, 0, 0.35, 0.24, 0.4),
+                new StudioPanel("palette", "Palette", palette, 0, 0.35, 0.24, 0.4));
+    }
+
+    /** The editor's transfer handler: palette items dropped on it are inserted there, the rest goes to {@code delegate}. */
+    javax.swing.TransferHandler paletteDrop(RSyntaxTextArea area, javax.swing.TransferHandler delegate) {
+        return PalettePanel.dropInto(area, delegate, this::insertItem);
     }
 
     // ---------------------------------------------------------------- following the model
@@ -273,21 +286,27 @@ final class ObjectPanels implements StudioModel.Listener {
         JMenu menu = new JMenu("Insert");
         menu.setMnemonic(KeyEvent.VK_I);
         menu.setName("insertMenu");
-        item(menu, "Sphere", KeyEvent.VK_S, () -> insertEntity("Sphere"));
-        item(menu, "Box", KeyEvent.VK_B, () -> insertEntity("Box"));
-        item(menu, "Plane", KeyEvent.VK_P, () -> insertEntity("Plane"));
-        item(menu, "Cylinder", KeyEvent.VK_Y, () -> insertEntity("Cylinder"));
-        menu.addSeparator();
-        item(menu, "Point light", KeyEvent.VK_L, () -> insertLight("PointLight { origin -> vec3(2, 4, -3) color -> rgb(1, 1, 1) }"));
-        item(menu, "Parallel light", KeyEvent.VK_R,
-                () -> insertLight("ParallelLight { from -> vec3(-1, 2, -1) pointing -> vec3(0, 0, 0) color -> rgb(1, 1, 1) }"));
-        item(menu, "Spot light", KeyEvent.VK_T,
-                () -> insertLight("SpotLight { origin -> vec3(0, 4, -2) pointing -> vec3(0, 0, 0) angle -> 30 color -> rgb(1, 1, 1) }"));
-        menu.addSeparator();
-        item(menu, "Camera", KeyEvent.VK_C,
-                () -> insertStatement("Settings { camera -> Camera { position -> vec3(0, 1, -6) pointing -> vec3(0, 0, 0) fov -> 60 } }",
-                        "a camera"));
+        int[] mnemonics = {KeyEvent.VK_S, KeyEvent.VK_B, KeyEvent.VK_P, KeyEvent.VK_Y, KeyEvent.VK_L, KeyEvent.VK_R, KeyEvent.VK_T,
+            KeyEvent.VK_C};
+        for (int i = 0; i < ITEMS.size(); i++) {
+            if (i == 4 || i == 7) menu.addSeparator();
+            String name = ITEMS.get(i);
+            item(menu, name, mnemonics[i], () -> insertItem(name, -1));
+        }
         return menu;
+    }
+
+    /** Inserts the Insert menu's (or the palette's) item {@code name} after the statement at offset {@code at} (−1: the caret). */
+    void insertItem(String name, int at) {
+        switch (name) {
+            case "Sphere", "Box", "Plane", "Cylinder" -> insertEntity(name, at);
+            case "Point light" -> insertLight("PointLight { origin -> vec3(2, 4, -3) color -> rgb(1, 1, 1) }");
+            case "Parallel light" -> insertLight("ParallelLight { from -> vec3(-1, 2, -1) pointing -> vec3(0, 0, 0) color -> rgb(1, 1, 1) }");
+            case "Spot light" -> insertLight("SpotLight { origin -> vec3(0, 4, -2) pointing -> vec3(0, 0, 0) angle -> 30 color -> rgb(1, 1, 1) }");
+            case "Camera" -> insert(List.of("Settings { camera -> Camera { position -> vec3(0, 1, -6) pointing -> vec3(0, 0, 0) fov -> 60 } }"),
+                    "a camera", at);
+            default -> throw new IllegalArgumentException("no such item: " + name);
+        }
     }
 
     private static void item(JMenu menu, String label, int mnemonic, Runnable action) {
@@ -299,7 +318,7 @@ final class ObjectPanels implements StudioModel.Listener {
     }
 
     /** The new entity where the camera looks, so that it shows in the next render. */
-    private void insertEntity(String type) {
+    private void insertEntity(String type, int at) {
         ScriptDocument d = window.model().current();
         Vec3 p = d != null && d.result() != null && d.result().scene() != null ? d.result().scene().settings().camera().pointing() : Vec3.ZERO;
         String literal = switch (type) {
@@ -311,10 +330,8 @@ final class ObjectPanels implements StudioModel.Listener {
             default -> "Cylinder { from -> " + ScriptEdits.vec3(p.x(), p.y() - 0.5, p.z()) + " to -> "
                     + ScriptEdits.vec3(p.x(), p.y() + 0.5, p.z()) + " radius -> 0.5 }";
         };
-        insert(List.of(literal, "Scene { " + literal + " }"), "a " + type);
+        insert(List.of(literal, "Scene { " + literal + " }"), "a " + type, at);
     }
-
-    private void insertStatement(String statement, String what) { insert(List.of(statement), what); }
 
     /** A light goes into the list of the Settings block that writes the lights, else into a new Settings block. */
     private void insertLight(String literal) {
@@ -325,7 +342,7 @@ final class ObjectPanels implements StudioModel.Listener {
             for (ObjectInfo block : map.settings()) if (block.attributes().containsKey("lights")) lights = block.attributes().get("lights");
         }
         if (lights == null) {
-            insertStatement("Settings { lights -> [" + literal + "] }", "a light");
+            insert(List.of("Settings { lights -> [" + literal + "] }"), "a light", -1);
             return;
         }
         String script = d.content();
@@ -347,14 +364,15 @@ final class ObjectPanels implements StudioModel.Listener {
 
     /**
      * Inserts the first of {@code forms} that keeps the script compiling, on a new line after the
-     * statement at the caret (after the object the caret is in), or else at the end of the script.
+     * statement at offset {@code offset} (−1: the caret; after the object it is in), or else at the
+     * end of the script.
      */
-    private void insert(List<String> forms, String what) {
+    private void insert(List<String> forms, String what, int offset) {
         ScriptDocument d = window.model().current();
         ScriptEditor editor = d == null ? null : window.editor(d);
         if (editor == null) return;
         String script = d.content();
-        int at = statementEnd(script, editor.area().getCaretPosition(), d.resultIsCurrent() ? map : null);
+        int at = statementEnd(script, offset >= 0 ? offset : editor.area().getCaretPosition(), d.resultIsCurrent() ? map : null);
         String indent = indentOfLine(script, at);
         List<ScriptEdits.Edit> tries = new ArrayList<>();
         for (String form : forms) tries.add(new ScriptEdits.Edit(at, at, "\n" + indent + form, what));

@@ -95,6 +95,16 @@ final class PropertiesPanel extends JPanel {
 
     Node shown() { return shown; }
 
+    /**
+     * Takes {@code node} as the one shown and makes the sheet's node of it, whose property sets are
+     * the sheet's rows (null for none); {@link #show} puts it in the sheet.
+     */
+    org.openide.nodes.Node sheetNode(Node node, SourceMap sourceMap) {
+        shown = node;
+        map = sourceMap;
+        return node == null || sourceMap == null ? null : new ObjectNode(node);
+    }
+
     /** Says what happened to the last edit: done (plain) or refused (in red). */
     void say(String text, boolean refused) {
         message.setText(text == null || text.isEmpty() ? " " : text);
@@ -104,14 +114,12 @@ final class PropertiesPanel extends JPanel {
 
     /** Shows the properties of {@code node} as written in the compile that {@code sourceMap} describes. */
     void show(Node node, SourceMap sourceMap) {
-        shown = node;
-        map = sourceMap;
+        org.openide.nodes.Node shownNode = sheetNode(node, sourceMap);
         title.setText(node == null ? "Nothing selected" : node.label() + (node.span() != null && node.span().line() > 0
                 ? "  (line " + node.span().line() + ")" : ""));
         if (node == null && sheet == null) return;
         sheet().getAccessibleContext().setAccessibleDescription(node == null ? "" : "Properties of " + node.label());
-        sheet.setNodes(node == null || sourceMap == null ? new org.openide.nodes.Node[0]
-                : new org.openide.nodes.Node[] {new ObjectNode(node)});
+        sheet.setNodes(shownNode == null ? new org.openide.nodes.Node[0] : new org.openide.nodes.Node[] {shownNode});
     }
 
     /** Shows the same node again, with the values as written now (after a refused edit). */
@@ -235,10 +243,16 @@ final class PropertiesPanel extends JPanel {
             literal = map.definitions().get(e.name()).text();
             note = "From the variable " + e.name() + ": editing changes the variable (and everything that reads it)";
             name = name + " (= " + e.name() + ")";
-        } else if (e.kind() == SourceMap.Kind.PARAMETER && call != null && call.argument(e.name()) != null
-                && call.argument(e.name()).kind().isLiteral()) {
-            literal = call.argument(e.name()).text();
-            note = "From the argument " + e.name() + " of the call " + call.macro() + "(…): editing changes the argument";
+        } else if (e.kind() == SourceMap.Kind.PARAMETER) {
+            ScriptEdits.Argument arg;
+            try {
+                arg = ScriptEdits.argument(info, call, spec.name(), e.name());
+            } catch (ScriptEdits.Refused why) {
+                return text(spec.name(), "= " + e.text(), why.getMessage());
+            }
+            literal = arg.literal().text();
+            note = "From the argument " + arg.parameter() + " of the call " + arg.call().macro() + "(…) at line "
+                    + arg.call().span().line() + ": editing changes the argument";
             name = name + " (= " + e.name() + ")";
         } else {
             return text(spec.name(), "= " + e.text(), "Computed by the expression " + e.text() + ": edit it in the script");

@@ -71,8 +71,12 @@ final class RenderJob {
     /** Render → Settings… for this session only: sizes, sampling and threads that replace the script's. */
     private final SessionSettings session;
 
-    RenderJob(Source source, CompileResult compiled, Shading shading, SessionSettings session, Listener listener) {
+    /** Where the render's rays are counted, tile by tile, for the System panel. */
+    private final Throughput throughput;
+
+    RenderJob(Source source, CompileResult compiled, Shading shading, SessionSettings session, Throughput throughput, Listener listener) {
         this.shading = shading;
+        this.throughput = throughput;
         this.session = session;
         thread = new Thread(() -> run(source, compiled, listener), "crt-studio-render");
         thread.setDaemon(true);
@@ -156,6 +160,8 @@ final class RenderJob {
                         });
                     }
                 }
+
+                @Override public void raysTraced(long rays) { throughput.add(rays, System.nanoTime()); }
 
                 @Override public boolean isCancelled() { return cancelled.get(); }
             });

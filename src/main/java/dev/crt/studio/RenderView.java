@@ -23,6 +23,8 @@ final class RenderView extends javax.swing.JPanel {
     private BufferedImage overlay;
     /** The selected entity's outline, the picture's size, drawn over it; or null. */
     private BufferedImage outline;
+    /** False while the script's text is not the text the picture was rendered from: its outlines are then stale. */
+    private boolean pictureCurrent = true;
     private boolean fit = true;
     private double zoom = 1;
     private double panX, panY;
@@ -163,6 +165,22 @@ final class RenderView extends javax.swing.JPanel {
     /** The outline shown over the picture, or null. */
     BufferedImage outline() { return outline; }
 
+    /** Whether the picture is of the script as it is; when not, the selection's outlines over it are not drawn. */
+    void setPictureCurrent(boolean current) {
+        if (current == pictureCurrent) return;
+        pictureCurrent = current;
+        repaint();
+    }
+
+    boolean isPictureCurrent() { return pictureCurrent; }
+
+    /** True when an outline of the selection is drawn over the picture now. */
+    boolean showsOutline() { return picture != null && pictureCurrent && (fits(overlay) || fits(outline)); }
+
+    private boolean fits(BufferedImage over) {
+        return over != null && over.getWidth() == picture.getWidth() && over.getHeight() == picture.getHeight();
+    }
+
     /** The centre of picture pixel (px, py) in this component's coordinates. */
     Point fromPicture(int px, int py) {
         double z = zoom();
@@ -191,8 +209,8 @@ final class RenderView extends javax.swing.JPanel {
         if (sx0 < sx1 && sy0 < sy1) {
             g2.drawImage(picture, (int) Math.round(ox + sx0 * z), (int) Math.round(oy + sy0 * z),
                     (int) Math.round(ox + sx1 * z), (int) Math.round(oy + sy1 * z), sx0, sy0, sx1, sy1, null);
-            for (BufferedImage over : new BufferedImage[] {overlay, outline}) {
-                if (over == null || over.getWidth() != picture.getWidth() || over.getHeight() != picture.getHeight()) continue;
+            for (BufferedImage over : pictureCurrent ? new BufferedImage[] {overlay, outline} : new BufferedImage[0]) {
+                if (!fits(over)) continue;
                 g2.setRenderingHint(RenderingHints.KEY_INTERPOLATION, RenderingHints.VALUE_INTERPOLATION_NEAREST_NEIGHBOR);
                 g2.drawImage(over, (int) Math.round(ox + sx0 * z), (int) Math.round(oy + sy0 * z),
                         (int) Math.round(ox + sx1 * z), (int) Math.round(oy + sy1 * z), sx0, sy0, sx1, sy1, null);

@@ -95,7 +95,8 @@ final class SceneOutline {
                 callSeen.put(call, new HashMap<>());
                 entities.add(new Node(Kind.CALL, label, key, call.span(), null, call, -1, group));
             }
-            group.add(entity(placed.get(i), i, callKeys.get(call), callSeen.get(call), call));
+            // Grouped under the top-level call; edited through the call that made it (a macro called from a macro).
+            group.add(entity(placed.get(i), i, callKeys.get(call), callSeen.get(call), map.makerOf(i)));
         }
         top.add(new Node(Kind.ENTITIES, "Entities", "Entities", null, null, null, -1, entities));
         return new Node(Kind.ROOT, scene.sourceName(), "", null, null, null, -1, top);

@@ -60,17 +60,9 @@ final class ScriptEdits {
                 return new Edit(def.start(), def.end(), literal, "changed the variable " + e.name() + " (line " + lineOf(script, def.start()) + ")");
             }
             case PARAMETER -> {
-                Expr arg = call == null || !call.parameters().equals(object.macroParameters()) ? null : call.argument(e.name());
-                if (arg == null) {
-                    throw new Refused("'" + attribute + "' of " + where + " comes from the macro parameter '" + e.name()
-                            + "': edit the macro call in the script");
-                }
-                if (!arg.kind().isLiteral()) {
-                    throw new Refused("'" + attribute + "' comes from the argument " + e.name() + " = " + arg.text() + " of the call "
-                            + call.macro() + "(…) at line " + call.span().line() + ", which is not a plain literal: edit the call");
-                }
-                return new Edit(arg.start(), arg.end(), literal, "changed the argument " + e.name() + " of " + call.macro() + "(…) at line "
-                        + call.span().line());
+                Argument arg = argument(object, call, attribute, e.name());
+                return new Edit(arg.literal().start(), arg.literal().end(), literal, "changed the argument " + arg.parameter() + " of "
+                        + arg.call().macro() + "(…) at line " + arg.call().span().line());
             }
             case EXPRESSION, OBJECT -> throw new Refused("'" + attribute + "' of " + where + " is computed by " + e.text()
                     + " (line " + line + "): edit the expression in the script");
@@ -81,6 +73,43 @@ final class ScriptEdits {
                 }
                 return new Edit(e.start(), e.end(), literal, "changed " + attribute + " of " + where + " (line " + line + ")");
             }
+        }
+    }
+
+    /** The argument literal a macro parameter's value is written as: the parameter, the call it is an argument of, the literal. */
+    record Argument(String parameter, MacroCall call, Expr literal) {}
+
+    /**
+     * Where the value of {@code parameter}, read by {@code attribute} of {@code object} (written in a
+     * macro body), is written as a literal: the argument of {@code call} (the call that made the
+     * object), or, when that argument passes on a parameter of the macro the call is written in, the
+     * argument of that call's caller, and so on out to the top level of the script. Refused when an
+     * argument on the way is computed, or is a literal written inside a macro body (shared by every
+     * call of that macro).
+     */
+    static Argument argument(ObjectInfo object, MacroCall call, String attribute, String parameter) throws Refused {
+        String where = object.type() + (object.variable() != null ? " " + object.variable() : "");
+        if (call == null || !call.parameters().equals(object.macroParameters()) || call.argument(parameter) == null) {
+            throw new Refused("'" + attribute + "' of " + where + " comes from the macro parameter '" + parameter
+                    + "': edit the macro call in the script");
+        }
+        StringBuilder path = new StringBuilder();
+        for (MacroCall c = call; ; c = c.caller()) {
+            Expr arg = c.argument(parameter);
+            String written = "the argument " + parameter + " = " + arg.text() + " of the call " + c.macro() + "(…) at line " + c.span().line();
+            path.append(path.length() == 0 ? "" : ", from ").append(written);
+            if (arg.kind() == SourceMap.Kind.PARAMETER && c.caller() != null && c.caller().argument(arg.name()) != null) {
+                parameter = arg.name();
+                continue;
+            }
+            if (!arg.kind().isLiteral()) {
+                throw new Refused("'" + attribute + "' comes from " + path + ", which is computed, not a plain literal: edit the call");
+            }
+            if (c.caller() != null) {
+                throw new Refused("'" + attribute + "' comes from " + path + ", written inside the macro " + c.caller().macro()
+                        + " and shared by every call of it: change it there, or make it a parameter of " + c.caller().macro());
+            }
+            return new Argument(parameter, c, arg);
         }
     }
 

@@ -81,6 +81,7 @@ final class StudioWindow implements StudioModel.Listener {
     private final ConsolePanel console = new ConsolePanel();
     private final LiveDock live = new LiveDock(model, editors::get, console);
     private final RenderSelection renderSelection = new RenderSelection(renderView);
+    private final RenderFreshness renderFreshness = new RenderFreshness(renderView);
     private final JLabel caretStatus = new JLabel("–");
     private final JLabel renderStatus = new JLabel(" ");
     private final JProgressBar progress = new JProgressBar(0, 1000);
@@ -131,6 +132,7 @@ final class StudioWindow implements StudioModel.Listener {
         model.addListener(recovery);
         model.addListener(this);
         model.addListener(renderSelection);
+        model.addListener(renderFreshness);
         buildActions();
         buildPanels();
         frame.setJMenuBar(buildMenus());
@@ -487,7 +489,8 @@ final class StudioWindow implements StudioModel.Listener {
             editor.area().getInputMap().put(key, "crt." + n);
             editor.area().getActionMap().put("crt." + n, actions.get(n));
         }
-        editor.area().setTransferHandler(new FileDropHandler(editor.area().getTransferHandler(), this::openAll));
+        editor.area().setTransferHandler(new FileDropHandler(objects.paletteDrop(editor.area(), editor.area().getTransferHandler()),
+                this::openAll));
         editor.area().addCaretListener(e -> showCaret(editor));
         tabs.addTab(d.name(), editor);
         tabs.setSelectedComponent(editor);
@@ -834,7 +837,8 @@ final class StudioWindow implements StudioModel.Listener {
         renderStatus.setText("rendering " + d.name() + "…");
         RenderJob[] self = new RenderJob[1];
         Shading shading = originalShadingItem.isSelected() ? Shading.ORIGINAL : null;
-        self[0] = new RenderJob(d.source(), compiled, shading, session, new RenderJob.Listener() {
+        dev.crt.lang.Source source = d.source();
+        self[0] = new RenderJob(source, compiled, shading, session, throughput, new RenderJob.Listener() {
             @Override public void picture(java.awt.image.BufferedImage image, boolean coarse) {
                 if (job != self[0]) return;
                 renderView.show(image);
@@ -855,10 +859,9 @@ final class StudioWindow implements StudioModel.Listener {
                 renderView.show(r.picture());
                 objects.rendered(r);
                 renderSelection.rendered(d, r);
+                renderFreshness.rendered(d, source.text());
                 progress.setVisible(false);
                 RenderStats stats = r.renderer().stats();
-                long end = System.nanoTime();
-                throughput.record(stats.totalRays(), end - stats.renderNanos(), end);
                 Settings s = r.scene().settings();
                 String summary = String.format("%d×%d in %.2f s, %.1f Mrays/s, first picture after %d ms", s.width(), s.height(),
                         r.totalNanos() / 1e9, stats.megaRaysPerSecond(), r.firstPictureNanos() / 1_000_000);

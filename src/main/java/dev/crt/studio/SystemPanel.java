@@ -104,7 +104,8 @@ final class SystemPanel extends JPanel {
 
     /** Takes one sample of every series and redraws the charts. */
     void sample() {
-        long now = Math.floorDiv(System.nanoTime(), 1_000_000_000L);
+        long nowNanos = System.nanoTime();
+        long now = Math.floorDiv(nowNanos, 1_000_000_000L);
         if (count > 0 && seconds[count - 1] == now) return;
         if (count == seconds.length) {
             System.arraycopy(seconds, 1, seconds, 0, count - 1);
@@ -119,9 +120,11 @@ final class SystemPanel extends JPanel {
         values.get(HEAP_USED)[count] = (rt.totalMemory() - rt.freeMemory()) / (double) (1 << 20);
         values.get(HEAP_COMMITTED)[count] = rt.totalMemory() / (double) (1 << 20);
         count++;
-        // Renders report their rays when they finish, spread over the seconds they took: read those seconds again.
+        // Each past second is read again whole (a sample comes at any moment of its second); the
+        // newest point is the rate over the last whole second, which a running render keeps filling.
         double[] mrays = values.get(THROUGHPUT);
-        for (int i = 0; i < count; i++) mrays[i] = throughput.megaRays(seconds[i]);
+        for (int i = 0; i < count - 1; i++) mrays[i] = throughput.megaRays(seconds[i]);
+        mrays[count - 1] = throughput.recentMegaRaysPerSecond(nowNanos);
         double[] x = new double[count];
         for (int i = 0; i < count; i++) x[i] = seconds[i] - now;
         show(cpu, x, CPU_SYSTEM, CPU_CRT);

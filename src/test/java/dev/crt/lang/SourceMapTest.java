@@ -126,6 +126,43 @@ class SourceMapTest {
     }
 
     @Test
+    void macrosCalledFromMacrosRecordTheChainOfCalls() {
+        String text = """
+                leaf = Macro (size) { Sphere { radius -> size } }
+                pair = Macro (s) {
+                  leaf(s)
+                  leaf(0.1)
+                }
+                Scene { pair(0.4) Sphere { } pair(0.6) }
+                """;
+        CompileResult result = compile(text);
+        assertThat(result.hasErrors()).isFalse();
+        SourceMap map = result.sourceMap();
+        assertThat(result.scene().entities()).hasSize(5);
+        SourceMap.MacroCall top = map.callOf(0);
+        assertThat(top.macro()).isEqualTo("pair");
+        assertThat(top.caller()).isNull();
+        assertThat(map.callOf(1)).isSameAs(top);
+        assertThat(map.callOf(2)).isNull();
+        assertThat(map.makerOf(2)).isNull();
+        assertThat(map.callOf(3)).isNotSameAs(top);
+        assertThat(map.callOf(3).span().line()).isEqualTo(6);
+
+        SourceMap.MacroCall inner = map.makerOf(0);
+        assertThat(inner.macro()).isEqualTo("leaf");
+        assertThat(inner.span().line()).isEqualTo(3);
+        assertThat(inner.caller()).isSameAs(top);
+        assertThat(inner.outermost()).isSameAs(top);
+        // Inside pair's body, s is pair's parameter; 0.1 a literal written in the body.
+        assertThat(inner.argument("size").kind()).isEqualTo(Kind.PARAMETER);
+        assertThat(inner.argument("size").name()).isEqualTo("s");
+        assertThat(map.makerOf(1).argument("size").kind()).isEqualTo(Kind.NUMBER);
+        assertThat(map.makerOf(1).span().line()).isEqualTo(4);
+        assertThat(map.makerOf(3).caller()).isSameAs(map.callOf(3));
+        assertThat(at(text, map.makerOf(3).caller().argument("s"))).isEqualTo("0.6");
+    }
+
+    @Test
     void csgOperationsAreRecordedWithTheirVariable() {
         String text = """
                 cut = Box { cornerA -> vec3(-1, -1, -1) cornerB -> vec3(1, 1, 1) } - Sphere { radius -> 1.3 }

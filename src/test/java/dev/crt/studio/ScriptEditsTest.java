@@ -31,7 +31,8 @@ class ScriptEditsTest {
 
     private static String set(String text, int entity, String attribute, String literal) throws ScriptEdits.Refused {
         CompileResult r = compile(text);
-        ScriptEdits.Edit e = ScriptEdits.setAttribute(text, r.sourceMap(), entity(r, entity), r.sourceMap().callOf(entity), attribute, literal);
+        // The navigator hands the sheet the call that made the entity: for a macro called from a macro, the inner call.
+        ScriptEdits.Edit e = ScriptEdits.setAttribute(text, r.sourceMap(), entity(r, entity), r.sourceMap().makerOf(entity), attribute, literal);
         String edited = e.applyTo(text);
         assertThat(ScriptEdits.breaks("e.crt", 0, edited)).as(edited).isNull();
         return edited;
@@ -87,6 +88,67 @@ class ScriptEditsTest {
                 .isInstanceOf(ScriptEdits.Refused.class).hasMessageContaining("inside a macro");
         assertThatThrownBy(() -> ScriptEdits.setAttribute(text, c.sourceMap(), entity(c, 0), c.sourceMap().callOf(0), "material", "red"))
                 .isInstanceOf(ScriptEdits.Refused.class);
+    }
+
+    @Test
+    void anEntityMadeByAMacroCalledFromAMacroEditsTheArgumentTheValueComesFrom() throws Exception {
+        String text = """
+                inner = Macro (size, at) { Sphere { center -> at radius -> size } }
+                outer = Macro (s, x) {
+                  inner(s, vec3(x, 0, 0))
+                  inner(0.2, vec3(x, 1, 0))
+                  inner(s * 2, vec3(x, 2, 0))
+                }
+                Scene { outer(0.5, 1) outer(0.4 * 1, 3) }
+                """;
+        // size is passed on as s, which the top-level call writes as 0.5: that literal is rewritten.
+        String edited = set(text, 0, "radius", "0.3");
+        assertThat(edited).isEqualTo(text.replace("outer(0.5, 1)", "outer(0.3, 1)"));
+        CompileResult after = compile(edited);
+        assertThat(((Sphere) after.scene().entities().get(0)).radius()).isEqualTo(0.3);
+        assertThat(((Sphere) after.scene().entities().get(2)).radius()).as("s * 2 follows").isEqualTo(0.6);
+        CompileResult c = compile(text);
+        SourceMap map = c.sourceMap();
+        // inner(0.2, …) is written inside outer: the literal is shared by both calls of outer.
+        assertThatThrownBy(() -> ScriptEdits.setAttribute(text, map, entity(c, 1), map.makerOf(1), "radius", "1"))
+                .isInstanceOf(ScriptEdits.Refused.class)
+                .hasMessage("'radius' comes from the argument size = 0.2 of the call inner(…) at line 4, written inside the macro "
+                        + "outer and shared by every call of it: change it there, or make it a parameter of outer");
+        // Computed on the way: in the inner call (s * 2), in the outer call (0.4 * 1), or a vec3 of a parameter.
+        assertThatThrownBy(() -> ScriptEdits.setAttribute(text, map, entity(c, 2), map.makerOf(2), "radius", "1"))
+                .isInstanceOf(ScriptEdits.Refused.class).hasMessageContaining("size = s * 2 of the call inner(…) at line 5")
+                .hasMessageContaining("computed");
+        assertThatThrownBy(() -> ScriptEdits.setAttribute(text, map, entity(c, 3), map.makerOf(3), "radius", "1"))
+                .isInstanceOf(ScriptEdits.Refused.class)
+                .hasMessage("'radius' comes from the argument size = s of the call inner(…) at line 3, from the argument s = 0.4 * 1 "
+                        + "of the call outer(…) at line 7, which is computed, not a plain literal: edit the call");
+        assertThatThrownBy(() -> ScriptEdits.setAttribute(text, map, entity(c, 0), map.makerOf(0), "center", "vec3(0, 0, 0)"))
+                .isInstanceOf(ScriptEdits.Refused.class).hasMessageContaining("at = vec3(x, 0, 0)");
+        // The outermost call alone (what was recorded before the chain) does not name the parameter size: refused, never a wrong edit.
+        assertThatThrownBy(() -> ScriptEdits.setAttribute(text, map, entity(c, 0), map.callOf(0), "radius", "1"))
+                .isInstanceOf(ScriptEdits.Refused.class).hasMessageContaining("macro parameter 'size'");
+    }
+
+    @Test
+    void theChainIsFollowedThroughEveryLevelAndThroughRecursion() throws Exception {
+        String deep = """
+                a = Macro (r) { Sphere { radius -> r } }
+                b = Macro (r2) { a(r2) }
+                c = Macro (r3) { b(r3) }
+                Scene { c(0.7) }
+                """;
+        assertThat(set(deep, 0, "radius", "0.9")).isEqualTo(deep.replace("c(0.7)", "c(0.9)"));
+        String tower = """
+                tower = Macro (n, size) {
+                  Sphere { center -> vec3(0, n, 0) radius -> size }
+                  if (n > 0) { tower(n - 1, size) }
+                }
+                Scene { tower(2, 0.3) }
+                """;
+        CompileResult c = compile(tower);
+        assertThat(c.scene().entities()).hasSize(3);
+        assertThat(c.sourceMap().makerOf(2).caller().caller()).isSameAs(c.sourceMap().callOf(2));
+        for (int i = 0; i < 3; i++) assertThat(set(tower, i, "radius", "0.25")).isEqualTo(tower.replace("tower(2, 0.3)", "tower(2, 0.25)"));
     }
 
     @Test

@@ -706,8 +706,7 @@ public final class Evaluator extends CRTBaseVisitor<Value> {
         if (stop != null) throw new EvaluationStopped(stop, callSpan, callChain());
         Map<String, Value> saved = locals;
         locals = scope;
-        boolean outermost = callStack.isEmpty();
-        if (recorder != null && outermost) recorder.callStarted(name != null ? name : "(anonymous)", params, ctx);
+        if (recorder != null) recorder.callStarted(name != null ? name : "(anonymous)", params, ctx);
         callStack.add(new Frame(name != null ? name : "(anonymous)", callSpan));
         try {
             List<EntityValue> out = new ArrayList<>();
@@ -716,7 +715,7 @@ public final class Evaluator extends CRTBaseVisitor<Value> {
         } finally {
             callStack.remove(callStack.size() - 1);
             locals = saved;
-            if (recorder != null && outermost) recorder.callEnded();
+            if (recorder != null) recorder.callEnded();
         }
     }
 

@@ -68,16 +68,20 @@ final class SourceRecorder {
         if (call != null && value instanceof EntityValue.Built b) madeBy.put(b.entity(), call);
     }
 
-    /** A call of a macro from outside any macro begins; what it builds until {@link #callEnded} is its. */
+    /**
+     * A call of a macro begins (its arguments are evaluated already); what it builds until
+     * {@link #callEnded} is its, and a call made meanwhile is made under it.
+     */
     void callStarted(String name, List<String> parameters, CRTParser.CallContext ctx) {
+        List<String> enclosing = macroParameters(ctx);
         List<Expr> arguments = new ArrayList<>();
         for (int i = 2; i < ctx.getChildCount(); i += 2) {
-            if (ctx.getChild(i) instanceof ParserRuleContext arg) arguments.add(expr(arg, null));
+            if (ctx.getChild(i) instanceof ParserRuleContext arg) arguments.add(expr(arg, enclosing));
         }
-        call = new MacroCall(name, evaluator.span(ctx), List.copyOf(parameters), arguments);
+        call = new MacroCall(name, evaluator.span(ctx), List.copyOf(parameters), arguments, call);
     }
 
-    void callEnded() { call = null; }
+    void callEnded() { call = call == null ? null : call.caller(); }
 
     void assigned(CRTParser.AssignmentContext ctx) {
         assignments.computeIfAbsent(ctx.IDENT().getText(), k -> new IdentityHashMap<>())
