@@ -21,43 +21,73 @@ final class BraceFoldParser implements FoldParser {
     public List<Fold> getFolds(RSyntaxTextArea area) {
         List<Fold> folds = new ArrayList<>();
         Segment text = new Segment();
+        // Open braces: offset, line, and their fold once one is made. A fold is made only for a
+        // block that closes on a later line (and then for every block around it, which spans those
+        // lines too): each fold holds two positions in the document, and making and dropping one
+        // per brace pair that opens and closes on one line cost 50 ms on 2,500 such lines.
+        int[] offsets = new int[16], lines = new int[16];
+        Fold[] made = new Fold[16];
+        int depth = 0;
         try {
             javax.swing.text.Document doc = area.getDocument();
             doc.getText(0, doc.getLength(), text);
-            Fold current = null;
+            char[] a = text.array;
+            int base = text.offset, n = text.count, line = 0;
             boolean inString = false;
-            for (int i = 0; i < text.count; i++) {
-                char c = text.array[text.offset + i];
+            for (int i = 0; i < n; i++) {
+                char c = a[base + i];
                 if (c == '\n' || c == '\r') {
                     inString = false;
+                    if (c == '\n' || i + 1 >= n || a[base + i + 1] != '\n') line++;
                 } else if (inString) {
                     if (c == '\\') {
-                        if (i + 1 < text.count && text.array[text.offset + i + 1] != '\n' && text.array[text.offset + i + 1] != '\r') i++;
+                        if (i + 1 < n && a[base + i + 1] != '\n' && a[base + i + 1] != '\r') i++;
                     } else if (c == '"') {
                         inString = false;
                     }
                 } else if (c == '"') {
                     inString = true;
-                } else if (c == '-' && i + 1 < text.count && text.array[text.offset + i + 1] == '-') {
-                    while (i + 1 < text.count && text.array[text.offset + i + 1] != '\n' && text.array[text.offset + i + 1] != '\r') i++;
+                } else if (c == '-' && i + 1 < n && a[base + i + 1] == '-') {
+                    while (i + 1 < n && a[base + i + 1] != '\n' && a[base + i + 1] != '\r') i++;
                 } else if (c == '{') {
-                    if (current == null) {
-                        current = new Fold(FoldType.CODE, area, i);
-                        folds.add(current);
-                    } else {
-                        current = current.createChild(FoldType.CODE, i);
+                    if (depth == offsets.length) {
+                        offsets = java.util.Arrays.copyOf(offsets, 2 * depth);
+                        lines = java.util.Arrays.copyOf(lines, 2 * depth);
+                        made = java.util.Arrays.copyOf(made, 2 * depth);
                     }
-                } else if (c == '}' && current != null) {
-                    current.setEndOffset(i);
-                    Fold parent = current.getParent();
-                    if (current.isOnSingleLine() && !current.removeFromParent()) folds.remove(folds.size() - 1);
-                    current = parent;
+                    offsets[depth] = i;
+                    lines[depth] = line;
+                    made[depth] = null;
+                    depth++;
+                } else if (c == '}' && depth > 0) {
+                    depth--;
+                    if (lines[depth] != line) {
+                        make(area, folds, offsets, made, depth);
+                        made[depth].setEndOffset(i);
+                    }
+                    made[depth] = null;
                 }
             }
+            // Blocks never closed keep their folds, open to the end.
+            if (depth > 0) make(area, folds, offsets, made, depth - 1);
         } catch (BadLocationException e) {
             // The text was read from the document itself a moment ago: every offset in it exists.
             throw new IllegalStateException(e);
         }
         return folds;
+    }
+
+    /** Makes the folds of the open blocks 0..{@code top} that have none yet, outermost first. */
+    private static void make(RSyntaxTextArea area, List<Fold> folds, int[] offsets, Fold[] made, int top)
+            throws BadLocationException {
+        for (int d = 0; d <= top; d++) {
+            if (made[d] != null) continue;
+            if (d == 0) {
+                made[d] = new Fold(FoldType.CODE, area, offsets[d]);
+                folds.add(made[d]);
+            } else {
+                made[d] = made[d - 1].createChild(FoldType.CODE, offsets[d]);
+            }
+        }
     }
 }

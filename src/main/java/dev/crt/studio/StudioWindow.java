@@ -245,12 +245,22 @@ final class StudioWindow implements StudioModel.Listener {
         paintInto(new java.awt.image.BufferedImage(frame.getWidth(), frame.getHeight(), java.awt.image.BufferedImage.TYPE_INT_RGB));
         render();
         long until = System.nanoTime() + 30_000_000_000L;
+        boolean[] typed = new boolean[1];
         Timer poll = new Timer(20, null);
         poll.addActionListener(e -> {
-            if (job != null && System.nanoTime() < until) return;
+            boolean late = System.nanoTime() > until;
+            if (job != null && !late) return;
+            ScriptDocument d = model.current();
+            if (!typed[0] && !late && d != null) {
+                // Then a mistake typed, as an artist does first thing: the diagnostics' classes too.
+                typed[0] = true;
+                editors.get(d).area().append("\nnot_defined_anywhere\n");
+                return;
+            }
+            if (!late && d != null && !(d.resultIsCurrent() && d.result().hasErrors())) return;
             poll.stop();
             paintInto(new java.awt.image.BufferedImage(frame.getWidth(), frame.getHeight(), java.awt.image.BufferedImage.TYPE_INT_RGB));
-            System.exit(lastRender != null ? 0 : 1);
+            System.exit(lastRender != null && !late ? 0 : 1);
         });
         poll.start();
     }

@@ -18,6 +18,9 @@ final class EdtWatchdog implements AutoCloseable {
     private final java.util.concurrent.atomic.AtomicLong longestNanos = new java.util.concurrent.atomic.AtomicLong();
     private final java.util.concurrent.atomic.AtomicLong robotSyncNanos = new java.util.concurrent.atomic.AtomicLong();
 
+    /** Stalls longer than this have their stack printed (-Dcrt.watchdog.printMs; 250 ms unless set). */
+    private static final long PRINT_NANOS = Long.getLong("crt.watchdog.printMs", 250) * 1_000_000L;
+
     EdtWatchdog() {
         thread = new Thread(() -> {
             while (running) {
@@ -31,7 +34,7 @@ final class EdtWatchdog implements AutoCloseable {
                     while (!ran.await(50, java.util.concurrent.TimeUnit.MILLISECONDS)) {
                         String now = edtStack();
                         if (now.contains("syncNativeQueue")) robotSync = true;
-                        if (stack == null && System.nanoTime() - start > 250_000_000L) stack = now;
+                        if (stack == null && System.nanoTime() - start > PRINT_NANOS) stack = now;
                     }
                 } catch (InterruptedException e) {
                     return;
@@ -42,7 +45,7 @@ final class EdtWatchdog implements AutoCloseable {
                 } else {
                     longestNanos.accumulateAndGet(waited, Math::max);
                     if (stack != null) {
-                        System.out.println("EDT watchdog: a stall of " + waited / 1_000_000 + " ms; 250 ms into it the EDT was at:\n" + stack);
+                        System.out.println("EDT watchdog: a stall of " + waited / 1_000_000 + " ms; " + PRINT_NANOS / 1_000_000 + " ms into it the EDT was at:\n" + stack);
                     }
                 }
                 try {
