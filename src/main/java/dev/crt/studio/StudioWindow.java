@@ -252,9 +252,14 @@ final class StudioWindow implements StudioModel.Listener {
             if (job != null && !late) return;
             ScriptDocument d = model.current();
             if (!typed[0] && !late && d != null) {
-                // Then a mistake typed, as an artist does first thing: the diagnostics' classes too.
+                // Then the caret into an object (the property sheet is made and painted) and a
+                // mistake typed, as an artist does first thing: the classes of both too.
                 typed[0] = true;
-                editors.get(d).area().append("\nnot_defined_anywhere\n");
+                var area = editors.get(d).area();
+                int sphere = area.getText().indexOf("Sphere");
+                if (sphere >= 0) area.setCaretPosition(sphere + 1);
+                paintInto(new java.awt.image.BufferedImage(frame.getWidth(), frame.getHeight(), java.awt.image.BufferedImage.TYPE_INT_RGB));
+                area.append("\nnot_defined_anywhere\n");
                 return;
             }
             if (!late && d != null && !(d.resultIsCurrent() && d.result().hasErrors())) return;

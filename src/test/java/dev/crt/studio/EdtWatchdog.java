@@ -64,7 +64,7 @@ final class EdtWatchdog implements AutoCloseable {
         for (var e : Thread.getAllStackTraces().entrySet()) {
             if (!e.getKey().getName().startsWith("AWT-EventQueue")) continue;
             StackTraceElement[] frames = e.getValue();
-            for (int i = 0; i < Math.min(frames.length, 14); i++) b.append("    at ").append(frames[i]).append('\n');
+            for (int i = 0; i < Math.min(frames.length, Integer.getInteger("crt.watchdog.frames", 14)); i++) b.append("    at ").append(frames[i]).append('\n');
         }
         return b.toString();
     }
