@@ -75,7 +75,7 @@ public final class Studio {
 
     /**
      * The window is painted and takes keys: says how long that took. With the system property
-     * {@code crt.studio.quitWhenReady} (start-up benchmarks, training the launcher's start-up cache)
+     * {@code crt.studio.quitWhenReady} (start-up benchmarks: bench/studio-bench.sh)
      * the line goes to standard output and the studio quits.
      */
     private static void ready(StudioWindow window, long start) {

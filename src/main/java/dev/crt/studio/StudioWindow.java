@@ -234,7 +234,8 @@ final class StudioWindow implements StudioModel.Listener {
     /**
      * Goes through a start without showing anything, for the launcher's start-up cache: the window
      * is made (unmapped), {@code files} opened and compiled, the content painted into an image, the
-     * script rendered; then the JVM exits, which writes the cache. Classes and code paths a real
+     * script rendered, an object selected and a mistake typed; then the JVM exits (0 when all went
+     * through, 1 when 30 s were not enough), which writes the cache. Classes and code paths a real
      * start needs are then already loaded and linked when the studio starts the next time.
      */
     void train(List<Path> files) {
