@@ -254,22 +254,33 @@ class AnimationGuiTest {
     }
 
     private static void enter(org.assertj.swing.fixture.JSpinnerFixture spinner, String text, Object value) {
+        // Typed into the spinner's text field, then Enter only once the field shows the whole text:
+        // CI runs committed "200" for "2000" (and "6" for "64") five times in a row, the last key
+        // still on its way through the X server when the commit came.
+        javax.swing.JFormattedTextField field = onEdt(() -> ((javax.swing.JSpinner.DefaultEditor) spinner.target().getEditor()).getTextField());
+        org.assertj.swing.fixture.JTextComponentFixture box = new org.assertj.swing.fixture.JTextComponentFixture(spinner.robot(), field);
         java.util.List<String> seen = new java.util.ArrayList<>();
         for (int attempt = 0; attempt < 5; attempt++) {
-            spinner.enterTextAndCommit(text);
+            box.selectAll();
+            box.enterText(text);
+            long until = System.nanoTime() + 2_000_000_000L;
+            while (!text.equals(onEdt(() -> field.getText())) && System.nanoTime() < until) pause(20);
+            box.pressAndReleaseKeys(KeyEvent.VK_ENTER);
+            long committed = System.nanoTime() + 2_000_000_000L;
+            while (!value.equals(onEdt(() -> spinner.target().getValue())) && System.nanoTime() < committed) pause(20);
             if (value.equals(onEdt(() -> spinner.target().getValue()))) return;
-            // A CI run lost the second key three times in a row within a second: what held the
-            // focus then is recorded, and the next try waits for the dialog to settle first.
-            seen.add(onEdt(() -> spinner.target().getValue() + " with the focus in "
-                    + java.awt.KeyboardFocusManager.getCurrentKeyboardFocusManager().getFocusOwner()));
-            try {
-                Thread.sleep(300L * (attempt + 1));
-            } catch (InterruptedException e) {
-                Thread.currentThread().interrupt();
-                return;
-            }
+            seen.add(onEdt(() -> "text \"" + field.getText() + "\", value " + spinner.target().getValue() + ", focus in "
+                    + java.awt.KeyboardFocusManager.getCurrentKeyboardFocusManager().getFocusOwner().getName()));
         }
         assertThat(onEdt(() -> spinner.target().getValue())).as("after typing %s five times: %s", text, seen).isEqualTo(value);
+    }
+
+    private static void pause(long ms) {
+        try {
+            Thread.sleep(ms);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
     }
 
     /** Clicks OK; a click lost while the dialog's focus settled (the dialog still up after 10 s) is made once more. */
