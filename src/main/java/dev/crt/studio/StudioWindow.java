@@ -243,7 +243,7 @@ final class StudioWindow implements StudioModel.Listener {
         openAll(files);
         if (model.documents().isEmpty()) newDocument();
         frame.validate();
-        paintInto(new java.awt.image.BufferedImage(frame.getWidth(), frame.getHeight(), java.awt.image.BufferedImage.TYPE_INT_RGB));
+        paintOffscreen();
         render();
         long until = System.nanoTime() + 30_000_000_000L;
         boolean[] typed = new boolean[1];
@@ -259,19 +259,21 @@ final class StudioWindow implements StudioModel.Listener {
                 var area = editors.get(d).area();
                 int sphere = area.getText().indexOf("Sphere");
                 if (sphere >= 0) area.setCaretPosition(sphere + 1);
-                paintInto(new java.awt.image.BufferedImage(frame.getWidth(), frame.getHeight(), java.awt.image.BufferedImage.TYPE_INT_RGB));
+                paintOffscreen();
                 area.append("\nnot_defined_anywhere\n");
                 return;
             }
             if (!late && d != null && !(d.resultIsCurrent() && d.result().hasErrors())) return;
             poll.stop();
-            paintInto(new java.awt.image.BufferedImage(frame.getWidth(), frame.getHeight(), java.awt.image.BufferedImage.TYPE_INT_RGB));
+            paintOffscreen();
             System.exit(lastRender != null && !late ? 0 : 1);
         });
         poll.start();
     }
 
-    private void paintInto(java.awt.image.BufferedImage image) {
+    /** Paints the whole window into an image of its size, as a paint on the screen would. */
+    private void paintOffscreen() {
+        var image = new java.awt.image.BufferedImage(frame.getWidth(), frame.getHeight(), java.awt.image.BufferedImage.TYPE_INT_RGB);
         java.awt.Graphics2D g = image.createGraphics();
         try {
             frame.getRootPane().paint(g);

@@ -21,7 +21,6 @@ import java.util.stream.Stream;
 import javax.imageio.ImageIO;
 import javax.imageio.ImageReader;
 import javax.imageio.stream.ImageInputStream;
-import org.assertj.swing.core.BasicRobot;
 import org.assertj.swing.core.Robot;
 import org.assertj.swing.fixture.DialogFixture;
 import org.assertj.swing.fixture.FrameFixture;
@@ -52,20 +51,12 @@ class AnimationGuiTest {
 
     @BeforeEach
     void robot() {
-        robot = BasicRobot.robotWithCurrentAwtHierarchy();
-        robot.settings().delayBetweenEvents(15);
-        robot.settings().eventPostingDelay(20);
+        robot = GuiTestSupport.robot();
     }
 
     @AfterEach
     void closeStudio() {
-        if (studio != null) {
-            onEdt(() -> {
-                for (ScriptDocument d : studio.model().documents()) if (d.isModified()) d.saved(d.file(), d.diskTime());
-                studio.quit();
-            });
-        }
-        if (robot != null) robot.cleanUp();
+        GuiTestSupport.close(studio, robot);
     }
 
     private Path scene(String name) throws IOException {

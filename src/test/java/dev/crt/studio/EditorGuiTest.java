@@ -16,7 +16,6 @@ import java.util.List;
 import javax.swing.JButton;
 import javax.swing.JTextField;
 import javax.swing.SwingUtilities;
-import org.assertj.swing.core.BasicRobot;
 import org.assertj.swing.core.MouseButton;
 import org.assertj.swing.core.Robot;
 import org.assertj.swing.fixture.FrameFixture;
@@ -59,22 +58,14 @@ class EditorGuiTest {
 
     @BeforeEach
     void robot() {
-        robot = BasicRobot.robotWithCurrentAwtHierarchy();
-        robot.settings().delayBetweenEvents(15);
-        robot.settings().eventPostingDelay(20);
+        robot = GuiTestSupport.robot();
     }
 
     @AfterEach
     void closeStudio(org.junit.jupiter.api.TestInfo test) {
         System.out.println("EDT watchdog, " + test.getDisplayName() + ": longest stall " + watchdog.longestMillis()
                 + " ms (robot's waitForIdle apart: " + watchdog.robotSyncMillis() + " ms)");
-        if (studio != null) {
-            onEdt(() -> {
-                for (ScriptDocument d : studio.model().documents()) if (d.isModified()) d.saved(d.file(), d.diskTime());
-                studio.quit();
-            });
-        }
-        if (robot != null) robot.cleanUp();
+        GuiTestSupport.close(studio, robot);
     }
 
     private Path scene(String name) throws IOException {

@@ -11,7 +11,6 @@ import java.io.InputStream;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
-import org.assertj.swing.core.BasicRobot;
 import org.assertj.swing.core.Robot;
 import org.assertj.swing.fixture.FrameFixture;
 import org.assertj.swing.fixture.JFileChooserFixture;
@@ -37,8 +36,7 @@ class GifLoopGuiTest {
 
     @AfterEach
     void close() {
-        if (studio != null) onEdt(() -> studio.quit());
-        if (robot != null) robot.cleanUp();
+        GuiTestSupport.close(studio, robot);
     }
 
     private void export(Path gif) {
@@ -55,9 +53,7 @@ class GifLoopGuiTest {
 
     @Test
     void theExportedGifLoopsOnlyWithTheBoxChecked() throws IOException {
-        robot = BasicRobot.robotWithCurrentAwtHierarchy();
-        robot.settings().delayBetweenEvents(15);
-        robot.settings().eventPostingDelay(20);
+        robot = GuiTestSupport.robot();
         Path file = temp.resolve("moving-sphere.crt");
         try (InputStream in = getClass().getResourceAsStream("moving-sphere.crt")) {
             Files.write(file, in.readAllBytes());

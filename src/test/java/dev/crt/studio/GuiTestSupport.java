@@ -34,6 +34,28 @@ final class GuiTestSupport {
         });
     }
 
+    /** The robot of every GUI test: over the current AWT hierarchy, paced for a loaded machine. */
+    static org.assertj.swing.core.Robot robot() {
+        org.assertj.swing.core.Robot robot = org.assertj.swing.core.BasicRobot.robotWithCurrentAwtHierarchy();
+        robot.settings().delayBetweenEvents(15);
+        robot.settings().eventPostingDelay(20);
+        return robot;
+    }
+
+    /**
+     * Ends a test: its studio (if it opened one) quits without asking about unsaved text, which is
+     * marked saved first, and its robot (if any) lets go of the keys, buttons and windows.
+     */
+    static void close(StudioWindow studio, org.assertj.swing.core.Robot robot) {
+        if (studio != null) {
+            onEdt(() -> {
+                for (ScriptDocument d : studio.model().documents()) if (d.isModified()) d.saved(d.file(), d.diskTime());
+                studio.quit();
+            });
+        }
+        if (robot != null) robot.cleanUp();
+    }
+
     static StudioPaths paths(Path home) throws IOException {
         Files.createDirectories(home);
         return new StudioPaths(home.resolve("config").resolve("crt"), home.resolve("state").resolve("crt").resolve("recovery"));

@@ -17,7 +17,6 @@ import java.nio.file.Path;
 import java.util.List;
 import javax.swing.JTable;
 import javax.swing.text.Element;
-import org.assertj.swing.core.BasicRobot;
 import org.assertj.swing.core.GenericTypeMatcher;
 import org.assertj.swing.core.MouseButton;
 import org.assertj.swing.core.Robot;
@@ -47,9 +46,7 @@ class NavigatorGuiTest {
 
     @BeforeEach
     void open() throws IOException {
-        robot = BasicRobot.robotWithCurrentAwtHierarchy();
-        robot.settings().delayBetweenEvents(15);
-        robot.settings().eventPostingDelay(20);
+        robot = GuiTestSupport.robot();
         Path file = temp.resolve("objects.crt");
         try (InputStream in = getClass().getResourceAsStream("objects.crt")) {
             Files.write(file, in.readAllBytes());
@@ -67,13 +64,7 @@ class NavigatorGuiTest {
 
     @AfterEach
     void close() {
-        if (studio != null) {
-            onEdt(() -> {
-                for (ScriptDocument d : studio.model().documents()) if (d.isModified()) d.saved(d.file(), d.diskTime());
-                studio.quit();
-            });
-        }
-        if (robot != null) robot.cleanUp();
+        GuiTestSupport.close(studio, robot);
     }
 
     private javax.swing.JFrame window() { return studio.frame(); }

@@ -13,7 +13,6 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 import javax.swing.JList;
-import org.assertj.swing.core.BasicRobot;
 import org.assertj.swing.core.ComponentDragAndDrop;
 import org.assertj.swing.core.Robot;
 import org.fife.ui.rsyntaxtextarea.RSyntaxTextArea;
@@ -40,9 +39,7 @@ class PaletteGuiTest {
 
     @BeforeEach
     void open() throws IOException {
-        robot = BasicRobot.robotWithCurrentAwtHierarchy();
-        robot.settings().delayBetweenEvents(15);
-        robot.settings().eventPostingDelay(20);
+        robot = GuiTestSupport.robot();
         Path file = temp.resolve("objects.crt");
         try (InputStream in = getClass().getResourceAsStream("objects.crt")) {
             Files.write(file, in.readAllBytes());
@@ -54,13 +51,7 @@ class PaletteGuiTest {
 
     @AfterEach
     void close() {
-        if (studio != null) {
-            onEdt(() -> {
-                for (ScriptDocument d : studio.model().documents()) if (d.isModified()) d.saved(d.file(), d.diskTime());
-                studio.quit();
-            });
-        }
-        if (robot != null) robot.cleanUp();
+        GuiTestSupport.close(studio, robot);
     }
 
     private RSyntaxTextArea area() { return studio.currentEditor().area(); }

@@ -23,7 +23,6 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.stream.Stream;
-import org.assertj.swing.core.BasicRobot;
 import org.assertj.swing.core.MouseButton;
 import org.assertj.swing.core.Robot;
 import org.assertj.swing.fixture.FrameFixture;
@@ -67,9 +66,7 @@ class StudioGuiTest {
 
     @BeforeEach
     void robot() {
-        robot = BasicRobot.robotWithCurrentAwtHierarchy();
-        robot.settings().delayBetweenEvents(15);
-        robot.settings().eventPostingDelay(20);
+        robot = GuiTestSupport.robot();
     }
 
     @AfterEach
@@ -77,14 +74,7 @@ class StudioGuiTest {
         longestStall = Math.max(longestStall, watchdog.longestMillis());
         System.out.println("EDT watchdog, " + test.getDisplayName() + ": longest stall " + watchdog.longestMillis()
                 + " ms (robot's waitForIdle apart: " + watchdog.robotSyncMillis() + " ms)");
-        if (studio != null) {
-            onEdt(() -> {
-                // Leave nothing unsaved so that quitting asks nothing.
-                for (ScriptDocument d : studio.model().documents()) if (d.isModified()) d.saved(d.file(), d.diskTime());
-                studio.quit();
-            });
-        }
-        if (robot != null) robot.cleanUp();
+        GuiTestSupport.close(studio, robot);
     }
 
     private Path scene(String name) throws IOException {

@@ -41,7 +41,7 @@ class ThroughputGuiTest {
 
     @AfterEach
     void close() {
-        if (studio != null) onEdt(() -> studio.quit());
+        GuiTestSupport.close(studio, null);
     }
 
     @Test
