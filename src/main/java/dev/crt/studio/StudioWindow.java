@@ -122,6 +122,7 @@ final class StudioWindow implements StudioModel.Listener {
 
     StudioWindow(StudioPaths paths) {
         this.paths = paths;
+        LibraryLogs.quiet();
         this.settings = StudioSettings.load(paths.settingsFile());
         recovery = new Recovery(paths.recovery(), model);
         recovery.onProblem(m -> SwingUtilities.invokeLater(() -> console.log(ConsolePanel.Kind.ERROR, m)));
