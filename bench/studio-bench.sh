@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The studio's speed figures (docs/studio.md): start to a painted window with ./crt studio, then
 # keystroke to squiggle on 2,500 lines and F5 to first picture per example scene (StudioBench).
-# Runs on a virtual X display of its own. Needs Xvfb.
+# Runs on a virtual X display of its own. Needs Xvfb. An argument names another folder of scenes
+# for the F5 figures (an empty one measures the editor only).
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$here"
@@ -41,6 +42,20 @@ for i in 1 2 3; do
   done
 done
 
-mvn -B -q -o dependency:build-classpath -Dmdep.outputFile="$work/cp.txt" >/dev/null
-cp=$(cat "$work/cp.txt")
-java -Xss16m -Dcrt.assets="$here/assets" -Djava.util.prefs.userRoot="$work/p" -cp "target/test-classes:target/classes:$cp" dev.crt.studio.StudioBench scenes
+# The editor and render figures, in the studio as users run it: the jar ./crt runs, its Java, and on
+# Java 24 and later the studio's start-up cache (the bench's own classes come after the jar on the class
+# path, which the cache allows); the classes a first error notice or the first property sheet need are
+# then in the cache, as they are for users.
+java_bin="$(bash -c 'source <(sed -n "/^java_version()/,/^fi$/p" "$1"); echo "$java"' _ "$here/crt")"
+opts=(-Xss16m)
+if [ -n "$version_cache" ] && [ "${version_cache##*.}" = aot ] && [ -f "$studio_cache" ]; then
+  opts+=(-XX:AOTCache="$studio_cache" -Xlog:aot=off -Xlog:cds=off --enable-native-access=ALL-UNNAMED --sun-misc-unsafe-memory-access=allow)
+  echo "editor and render figures: $("$java_bin" -version 2>&1 | head -1), with the studio's start-up cache"
+elif [ -n "$version_cache" ] && [ -f "$studio_cache" ]; then
+  opts+=(-XX:SharedArchiveFile="$studio_cache" -Xshare:auto -Xlog:cds=off)
+  echo "editor and render figures: $("$java_bin" -version 2>&1 | head -1), with the studio's class-data archive"
+else
+  echo "editor and render figures: $("$java_bin" -version 2>&1 | head -1), no start-up cache"
+fi
+"$java_bin" "${opts[@]}" -Dcrt.assets="$here/assets" -Djava.util.prefs.userRoot="$work/p" \
+  -cp "$here/target/crt.jar:$here/target/test-classes" dev.crt.studio.StudioBench "${1:-scenes}"
