@@ -63,8 +63,7 @@ class EditorGuiTest {
 
     @AfterEach
     void closeStudio(org.junit.jupiter.api.TestInfo test) {
-        System.out.println("EDT watchdog, " + test.getDisplayName() + ": longest stall " + watchdog.longestMillis()
-                + " ms (robot's waitForIdle apart: " + watchdog.robotSyncMillis() + " ms)");
+        watchdog.report(test.getDisplayName());
         GuiTestSupport.close(studio, robot);
     }
 

@@ -74,6 +74,12 @@ final class EdtWatchdog implements AutoCloseable {
     /** The longest wait caused by the test robot's own waitForIdle, not counted in {@link #longestMillis}. */
     long robotSyncMillis() { return robotSyncNanos.get() / 1_000_000; }
 
+    /** Prints the longest stall of the test just run, the robot's own waits apart (the figure issue 7 asks to report). */
+    void report(String testName) {
+        System.out.println("EDT watchdog, " + testName + ": longest stall " + longestMillis()
+                + " ms (robot's waitForIdle apart: " + robotSyncMillis() + " ms)");
+    }
+
     /** Starts a new measurement (an event already waiting counts in the new one). */
     void reset() {
         longestNanos.set(0);

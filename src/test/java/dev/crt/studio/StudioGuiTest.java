@@ -72,8 +72,7 @@ class StudioGuiTest {
     @AfterEach
     void closeStudio(org.junit.jupiter.api.TestInfo test) {
         longestStall = Math.max(longestStall, watchdog.longestMillis());
-        System.out.println("EDT watchdog, " + test.getDisplayName() + ": longest stall " + watchdog.longestMillis()
-                + " ms (robot's waitForIdle apart: " + watchdog.robotSyncMillis() + " ms)");
+        watchdog.report(test.getDisplayName());
         GuiTestSupport.close(studio, robot);
     }
 
