@@ -17,6 +17,7 @@ public final class TextPositions {
     // The spans asked for lately: a loop asks for the same few on every turn (an object, its
     // attributes), and a million spheres then share one span instead of a search and a copy each.
     private final SourceSpan[] recent = new SourceSpan[256];
+    private int lastLine;
 
     public TextPositions(String file, String text) {
         this.file = file;
@@ -78,7 +79,15 @@ public final class TextPositions {
     }
 
     private int lineOf(int offset) {
+        // The compiler asks in reading order, mostly on the line of the last answer or the next.
+        int line = lastLine;
+        if (offset >= lineStarts[line]) {
+            int limit = Math.min(line + 4, lineStarts.length);
+            for (; line < limit; line++) {
+                if (line + 1 == lineStarts.length || offset < lineStarts[line + 1]) return lastLine = line;
+            }
+        }
         int i = Arrays.binarySearch(lineStarts, offset);
-        return i >= 0 ? i : -i - 2;
+        return lastLine = i >= 0 ? i : -i - 2;
     }
 }

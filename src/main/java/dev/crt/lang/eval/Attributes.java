@@ -17,8 +17,7 @@ import dev.crt.scene.Material;
 import dev.crt.scene.Rgb;
 import dev.crt.scene.SourceSpan;
 import dev.crt.scene.Texture;
-import java.util.LinkedHashMap;
-import java.util.Map;
+import java.util.List;
 
 /**
  * The evaluated attributes of one object literal, read back with type and range checks. A failed
@@ -50,7 +49,12 @@ final class Attributes {
     private final Evaluator evaluator;
     private final String type;
     private final SourceSpan typeSpan;
-    private final Map<String, Given> given = new LinkedHashMap<>();
+    // At most a score of attributes, written in order: parallel arrays searched from the start beat
+    // a hash map on a million spheres (the names the builders ask for are the very strings the type
+    // table holds when a compiled object literal put them, so most comparisons are one ==).
+    private String[] names = new String[4];
+    private Given[] values = new Given[4];
+    private int size;
     private final SourceSpan objectSpan;
     private boolean failed;
 
@@ -61,20 +65,43 @@ final class Attributes {
         this.objectSpan = objectSpan;
     }
 
-    void put(String name, Given g) { given.put(name, g); }
+    /** Records an attribute not given before ({@link #has} is false for it). */
+    void put(String name, Given g) {
+        if (size == names.length) {
+            names = java.util.Arrays.copyOf(names, size * 2);
+            values = java.util.Arrays.copyOf(values, size * 2);
+        }
+        names[size] = name;
+        values[size++] = g;
+    }
+
+    private Given find(String name) {
+        for (int i = 0; i < size; i++) {
+            String n = names[i];
+            if (n == name || n.equals(name)) return values[i];
+        }
+        return null;
+    }
 
     void markFailed() { failed = true; }
 
-    boolean has(String name) { return given.containsKey(name); }
+    boolean has(String name) { return find(name) != null; }
 
-    Map<String, Given> given() { return given; }
+    /** The names given, in the order written. */
+    List<String> names() { return List.of(java.util.Arrays.copyOf(names, size)); }
+
+    /** What was given for {@code name}, or null. */
+    Given given(String name) { return find(name); }
 
     SourceSpan typeSpan() { return typeSpan; }
 
     /** The whole literal, from the type name to the closing brace. */
     SourceSpan objectSpan() { return objectSpan; }
 
-    SourceSpan spanOf(String name) { return given.containsKey(name) ? given.get(name).span() : typeSpan; }
+    SourceSpan spanOf(String name) {
+        Given g = find(name);
+        return g != null ? g.span() : typeSpan;
+    }
 
     /** Throws once the object has been fully checked, if anything about it was wrong. */
     void finish() {
@@ -87,7 +114,7 @@ final class Attributes {
     }
 
     private Value required(String name) {
-        Given g = given.get(name);
+        Given g = find(name);
         if (g != null) return g.value();
         failed = true;
         evaluator.report(evaluator.error(type + " needs the attribute '" + name + "'", typeSpan));
@@ -99,7 +126,8 @@ final class Attributes {
     }
 
     Vec3 vector(String name, Vec3 fallback) {
-        Value v = fallback == null ? required(name) : given.containsKey(name) ? given.get(name).value() : null;
+        Given g = fallback == null ? null : find(name);
+        Value v = fallback == null ? required(name) : g != null ? g.value() : null;
         if (v == null) return fallback != null ? fallback : Vec3.ZERO;
         if (v instanceof VectorValue vec) return vec.vector();
         wrongType(name, "a vec3", v);
@@ -108,12 +136,12 @@ final class Attributes {
 
     /** The raw value of an optional attribute, or null when it is not given. */
     Value value(String name) {
-        Given g = given.get(name);
+        Given g = find(name);
         return g == null ? null : g.value();
     }
 
     boolean bool(String name, boolean fallback) {
-        Given g = given.get(name);
+        Given g = find(name);
         if (g == null) return fallback;
         if (g.value() instanceof BooleanValue b) return b.value();
         wrongType(name, "a boolean", g.value());
@@ -121,7 +149,7 @@ final class Attributes {
     }
 
     Rgb color(String name, Rgb fallback) {
-        Given g = given.get(name);
+        Given g = find(name);
         if (g == null) return fallback;
         if (g.value() instanceof ColorValue c) return c.color();
         boolean texturable = (name.equals("color") || name.equals("emission")) && type.equals("Material")
@@ -136,13 +164,13 @@ final class Attributes {
 
     /** A number attribute that may instead be a texture (read by {@link #texture}): then the fallback. */
     double numberOrTexture(String name, double fallback, Range range) {
-        Given g = given.get(name);
+        Given g = find(name);
         if (g != null && g.value() instanceof TextureValue) return fallback;
         return number(name, fallback, range, "a number or a texture");
     }
 
     private double number(String name, double fallback, Range range, String expected) {
-        Given g = given.get(name);
+        Given g = find(name);
         if (g == null) return fallback;
         if (!(g.value() instanceof NumberValue n)) {
             wrongType(name, expected, g.value());
@@ -166,7 +194,7 @@ final class Attributes {
     }
 
     int integer(String name, int fallback, int minimum) {
-        Given g = given.get(name);
+        Given g = find(name);
         if (g == null) return fallback;
         if (!(g.value() instanceof NumberValue n)) {
             wrongType(name, "an integer", g.value());
@@ -184,7 +212,7 @@ final class Attributes {
     }
 
     String string(String name, String fallback) {
-        Given g = given.get(name);
+        Given g = find(name);
         if (g == null) return fallback;
         if (g.value() instanceof StringValue s) return s.value();
         wrongType(name, "a string", g.value());
@@ -193,13 +221,13 @@ final class Attributes {
 
     /** The texture given for {@code name}, or null when it is absent or not a texture (then read it as a colour). */
     Texture texture(String name) {
-        Given g = given.get(name);
+        Given g = find(name);
         return g != null && g.value() instanceof TextureValue t ? t.texture() : null;
     }
 
     /** A texture attribute that must be a texture when given (a bump map). */
     Texture requiredTexture(String name) {
-        Given g = given.get(name);
+        Given g = find(name);
         if (g == null) return null;
         if (g.value() instanceof TextureValue t) return t.texture();
         wrongType(name, "a texture", g.value());
@@ -208,7 +236,7 @@ final class Attributes {
 
     /** A number or a vec3 (a number n means vec3(n, n, n)). */
     Vec3 numberOrVector(String name, Vec3 fallback) {
-        Given g = given.get(name);
+        Given g = find(name);
         if (g == null) return fallback;
         if (g.value() instanceof NumberValue n) return new Vec3(n.value(), n.value(), n.value());
         if (g.value() instanceof VectorValue v) return v.vector();
@@ -217,7 +245,7 @@ final class Attributes {
     }
 
     Material material(String name) {
-        Given g = given.get(name);
+        Given g = find(name);
         if (g == null) return Material.DEFAULT;
         if (g.value() instanceof MaterialValue m) return m.material();
         wrongType(name, "a material", g.value());
@@ -225,7 +253,7 @@ final class Attributes {
     }
 
     Camera camera(String name) {
-        Given g = given.get(name);
+        Given g = find(name);
         if (g == null) return null;
         if (g.value() instanceof CameraValue c) return c.camera();
         wrongType(name, "a camera", g.value());
@@ -233,7 +261,7 @@ final class Attributes {
     }
 
     Background background(String name) {
-        Given g = given.get(name);
+        Given g = find(name);
         if (g == null) return null;
         if (g.value() instanceof BackgroundValue b) return b.background();
         wrongType(name, "a background", g.value());

@@ -286,9 +286,25 @@ public final class Evaluator extends CRTBaseVisitor<Value> {
     // ---- compiled expressions ------------------------------------------------------------------
 
     /** An expression turned into a tree of closures, for expressions that run many times. */
-    private interface Code {
+    interface Code {
         Value run();
     }
+
+    /** True inside loops and macro bodies, where the same expressions run many times. */
+    boolean repeats() { return loopDepth != 0 || !callStack.isEmpty(); }
+
+    /** The compiled form of an expression that runs many times: made on first use, then kept. */
+    Code code(ParserRuleContext e) {
+        Code code = compiled.get(e);
+        if (code == null) {
+            code = compile(e);
+            compiled.put(e, code);
+        }
+        return code;
+    }
+
+    /** Runs a compiled expression (the same as {@link #evaluate} of its source inside a loop). */
+    Value run(Code code) { return code.run(); }
 
     /**
      * Evaluates an expression. At the top level it runs once, so it is visited directly; inside
@@ -296,13 +312,8 @@ public final class Evaluator extends CRTBaseVisitor<Value> {
      * contexts and the visitor's double dispatch on every later run.
      */
     Value evaluate(ParserRuleContext e) {
-        if (loopDepth == 0 && callStack.isEmpty()) return visit(e);
-        Code code = compiled.get(e);
-        if (code == null) {
-            code = compile(e);
-            compiled.put(e, code);
-        }
-        return code.run();
+        if (!repeats()) return visit(e);
+        return code(e).run();
     }
 
     private static ParserRuleContext unwrap(ParseTree tree) {
@@ -394,10 +405,11 @@ public final class Evaluator extends CRTBaseVisitor<Value> {
             if (Builtins.exists(name) && !assignedNames.contains(name) && Builtins.arity(name) == count) {
                 Code[] args = new Code[count];
                 for (int i = 0; i < count; i++) args[i] = compile(call.getChild(2 + 2 * i));
+                Builtins.Body body = Builtins.body(name);
                 return () -> {
                     Value[] values = new Value[count];
                     for (int i = 0; i < count; i++) values[i] = args[i].run();
-                    return callBuiltin(name, values, call);
+                    return callBuiltin(body, name, values, call);
                 };
             }
         }
@@ -631,7 +643,11 @@ public final class Evaluator extends CRTBaseVisitor<Value> {
     }
 
     private Value callBuiltin(String name, Value[] args, CRTParser.CallContext ctx) {
-        Value result = Builtins.call(name, new BuiltinCall(name, args, ctx));
+        return callBuiltin(Builtins.body(name), name, args, ctx);
+    }
+
+    private Value callBuiltin(Builtins.Body body, String name, Value[] args, CRTParser.CallContext ctx) {
+        Value result = body.apply(new BuiltinCall(name, args, ctx));
         // One check for every function: an infinity or NaN would only surface later, in the picture.
         boolean finite = result instanceof NumberValue n ? Double.isFinite(n.value())
                 : result instanceof VectorValue v ? v.vector().isFinite()

@@ -110,6 +110,10 @@ final class ObjectBuilder {
     }
 
     Value build(CRTParser.ObjectContext ctx) {
+        if (evaluator.repeats()) {
+            Plan plan = ctx.cached instanceof Plan p ? p : plan(ctx);
+            if (plan != null) return build(plan);
+        }
         String typeName = ctx.NAME().getText();
         SourceSpan typeSpan = evaluator.span(ctx.NAME().getSymbol());
         ObjectType type = TYPES.get(typeName);
@@ -118,6 +122,64 @@ final class ObjectBuilder {
         }
         Attributes a = evaluate(typeName, type.attributes(), ctx.attribute(), typeSpan, evaluator.span(ctx));
         Value value = type.build().apply(this, a);
+        a.finish();
+        return value;
+    }
+
+    /**
+     * An object literal in a loop or macro body, checked once: its type, its attributes' names as
+     * the type table spells them (the builders' own strings), their spans and compiled expressions.
+     * A million turns of a loop then do no lookups by name but the builder's own.
+     */
+    private record Plan(String typeName, ObjectType type, SourceSpan typeSpan, SourceSpan objectSpan,
+            String[] names, SourceSpan[] spans, Evaluator.Code[] values) {}
+
+    /** The plan of a literal without mistakes of name (kept on it), or null: the general path then reports them. */
+    private Plan plan(CRTParser.ObjectContext ctx) {
+        String typeName = ctx.NAME().getText();
+        ObjectType type = TYPES.get(typeName);
+        if (type == null) return null;
+        List<CRTParser.AttributeContext> written = ctx.attribute();
+        int n = written.size();
+        String[] names = new String[n];
+        SourceSpan[] spans = new SourceSpan[n];
+        Evaluator.Code[] values = new Evaluator.Code[n];
+        for (int i = 0; i < n; i++) {
+            CRTParser.AttributeContext attr = written.get(i);
+            String name = canonical(type.attributes(), attr.key.getText());
+            if (name == null) return null;
+            for (int j = 0; j < i; j++) if (names[j] == name) return null;
+            names[i] = name;
+            spans[i] = evaluator.span(attr);
+            values[i] = evaluator.code(attr.expression());
+        }
+        Plan plan = new Plan(typeName, type, evaluator.span(ctx.NAME().getSymbol()), evaluator.span(ctx), names, spans, values);
+        ctx.cached = plan;
+        return plan;
+    }
+
+    private static String canonical(java.util.Set<String> known, String name) {
+        for (String k : known) if (k.equals(name)) return k;
+        return null;
+    }
+
+    /** Does what {@link #evaluate} and the rest of {@link #build(CRTParser.ObjectContext)} do, from a plan. */
+    private Value build(Plan plan) {
+        Attributes a = new Attributes(evaluator, plan.typeName(), plan.typeSpan(), plan.objectSpan());
+        String[] names = plan.names();
+        for (int i = 0; i < names.length; i++) {
+            try {
+                a.put(names[i], new Attributes.Given(evaluator.run(plan.values()[i]), plan.spans()[i]));
+            } catch (EvaluationStopped stop) {
+                throw stop;
+            } catch (ScriptError e) {
+                a.markFailed();
+                evaluator.report(e);
+            } catch (Failed f) {
+                a.markFailed();
+            }
+        }
+        Value value = plan.type().build().apply(this, a);
         a.finish();
         return value;
     }
@@ -456,7 +518,7 @@ final class ObjectBuilder {
         if (a.has("image")) forms.add("image");
         if (forms.size() != 1) {
             String got = forms.isEmpty() ? "none" : String.join(" and ", forms);
-            String at = a.given().isEmpty() ? null : a.given().keySet().iterator().next();
+            String at = a.names().isEmpty() ? null : a.names().get(0);
             a.error(at == null ? "" : at, "a Background takes exactly one of: color, horizon with sky, or image (with angle); got " + got);
             return new BackgroundValue(Background.BLACK);
         }

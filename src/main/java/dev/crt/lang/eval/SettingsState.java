@@ -63,7 +63,7 @@ final class SettingsState {
                 a.error("shading", "shading must be \"crt\" or \"original\", got \"" + word + "\"");
             }
         }
-        given.addAll(a.given().keySet());
+        given.addAll(a.names());
         a.finish();
         hasCamera |= a.has("camera");
         current = new Settings(title, author, date, notes, lights, camera, background, supersampling, dofSamples,
@@ -71,7 +71,7 @@ final class SettingsState {
     }
 
     private static List<Light> lights(Attributes a) {
-        Value v = a.given().get("lights").value();
+        Value v = a.given("lights").value();
         if (v instanceof LightValue single) return List.of(single.light());
         if (!(v instanceof ListValue list)) {
             a.error("lights", "attribute 'lights' of Settings expects a list of lights, got " + v.typeName());
