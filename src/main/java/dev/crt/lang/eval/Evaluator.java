@@ -397,6 +397,10 @@ public final class Evaluator extends CRTBaseVisitor<Value> {
                 return value;
             };
         }
+        if (c instanceof CRTParser.IndexContext k) {
+            Code target = compile(k.arithmetic()), index = compile(k.expression());
+            return () -> index(k, target.run(), index.run());
+        }
         if (c instanceof CRTParser.CallContext call && call.getChild(0) instanceof CRTParser.AtomContext atom
                 && atom.getChild(0) instanceof CRTParser.VariableContext callee) {
             String name = name(callee);
@@ -585,11 +589,12 @@ public final class Evaluator extends CRTBaseVisitor<Value> {
 
     @Override
     public Value visitIndex(CRTParser.IndexContext ctx) {
-        Value target = visit(ctx.arithmetic());
-        Value indexValue = visit(ctx.expression());
-        SourceSpan where = span(ctx.expression());
-        if (!(indexValue instanceof NumberValue n)) throw error("an index must be an integer, got " + describe(indexValue), where);
-        if (!n.integral()) throw error("an index must be an integer, got the float " + NumberValue.formatFloat(n.value()), where);
+        return index(ctx, visit(ctx.arithmetic()), visit(ctx.expression()));
+    }
+
+    private Value index(CRTParser.IndexContext ctx, Value target, Value indexValue) {
+        if (!(indexValue instanceof NumberValue n)) throw error("an index must be an integer, got " + describe(indexValue), span(ctx.expression()));
+        if (!n.integral()) throw error("an index must be an integer, got the float " + NumberValue.formatFloat(n.value()), span(ctx.expression()));
         int length;
         if (target instanceof ListValue list) length = list.items().size();
         else if (target instanceof VectorValue || target instanceof ColorValue) length = 3;
@@ -597,7 +602,7 @@ public final class Evaluator extends CRTBaseVisitor<Value> {
                 + continuation(ctx), span(ctx));
         double i = n.value();
         if (i < 0 || i >= length) {
-            throw error("index " + n + " is out of range for a " + target.typeName() + " of length " + length, where);
+            throw error("index " + n + " is out of range for a " + target.typeName() + " of length " + length, span(ctx.expression()));
         }
         int k = (int) i;
         if (target instanceof ListValue list) return list.items().get(k);
