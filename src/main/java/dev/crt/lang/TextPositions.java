@@ -30,6 +30,14 @@ public final class TextPositions {
         int[] starts = new int[16];
         int count = 1;
         int n = text.length();
+        if (text.indexOf('\r') < 0) {
+            // Line feeds only (the usual case): String.indexOf searches many characters per step.
+            for (int i = text.indexOf('\n'); i >= 0; i = text.indexOf('\n', i + 1)) {
+                if (count == starts.length) starts = Arrays.copyOf(starts, count * 2);
+                starts[count++] = i + 1;
+            }
+            return Arrays.copyOf(starts, count);
+        }
         for (int i = 0; i < n; i++) {
             char c = text.charAt(i);
             if (c == '\n' || c == '\r') {
@@ -43,9 +51,8 @@ public final class TextPositions {
 
     private static int[] codePointOffsets(String text) {
         int n = text.length();
-        boolean surrogates = false;
-        for (int i = 0; i < n && !surrogates; i++) surrogates = Character.isHighSurrogate(text.charAt(i));
-        if (!surrogates) return null;
+        // As many code points as chars: no surrogate pairs (constant time for text of one byte per char).
+        if (text.codePointCount(0, n) == n) return null;
         int[] offsets = new int[text.codePointCount(0, n) + 1];
         int cp = 0;
         for (int i = 0; i < n; i += Character.charCount(text.codePointAt(i))) offsets[cp++] = i;

@@ -36,4 +36,38 @@ class TextPositionsTest {
         assertThat(d.span().line()).isEqualTo(3);
         assertThat(d.span().column()).isEqualTo(5);
     }
+
+    @Test
+    void everyOffsetGetsTheLineAndColumnACountOfLineBreaksGivesInAnyOrderOfQuestions() {
+        java.util.Random random = new java.util.Random(7);
+        for (String breaks : new String[] {"\n", "\r\n", "\r", "\n\r\n"}) {
+            StringBuilder b = new StringBuilder();
+            for (int i = 0; i < 400; i++) {
+                b.append("ab c".repeat(random.nextInt(3)));
+                if (random.nextInt(4) == 0) b.append("\uD83D\uDE00");
+                b.append(breaks.charAt(random.nextInt(breaks.length())));
+            }
+            String text = b.toString();
+            TextPositions p = new TextPositions("f.crt", text);
+            // Reading order (the compiler's), then at random (the studio's, the diagnostics').
+            java.util.List<Integer> offsets = new java.util.ArrayList<>();
+            for (int i = 0; i <= text.length(); i++) offsets.add(i);
+            for (int round = 0; round < 2; round++) {
+                for (int offset : offsets) {
+                    int line = 1, lineStart = 0;
+                    for (int i = 0; i < offset; i++) {
+                        char c = text.charAt(i);
+                        if (c == '\n' || c == '\r' && (i + 1 >= text.length() || text.charAt(i + 1) != '\n')) {
+                            line++;
+                            lineStart = i + 1;
+                        }
+                    }
+                    SourceSpan span = p.span(offset, offset);
+                    assertThat(span.line()).as("line of offset %d", offset).isEqualTo(line);
+                    assertThat(span.column()).as("column of offset %d", offset).isEqualTo(text.codePointCount(lineStart, offset) + 1);
+                }
+                java.util.Collections.shuffle(offsets, random);
+            }
+        }
+    }
 }

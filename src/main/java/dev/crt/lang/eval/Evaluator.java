@@ -800,7 +800,7 @@ public final class Evaluator extends CRTBaseVisitor<Value> {
     @Override
     public Value visitFloatLiteral(CRTParser.FloatLiteralContext ctx) {
         if (ctx.cached == null) {
-            double v = Double.parseDouble(ctx.FLOAT().getText());
+            double v = Decimals.parse(ctx.FLOAT().getText());
             if (!Double.isFinite(v)) throw error("number " + ctx.FLOAT().getText() + " is too large", span(ctx));
             ctx.cached = NumberValue.ofFloat(v);
         }
