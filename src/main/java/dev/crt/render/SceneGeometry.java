@@ -26,8 +26,6 @@ final class SceneGeometry {
     final int[] unbounded;
     /** Null when the bounded items are few enough to test them all. */
     final Bvh bvh;
-    /** The same hierarchy four children wide, for the scene's walks; null when {@link #bvh} is. */
-    final Bvh4 wide;
     /**
      * Per shape, the index in the scene's entity list of the top-level entity it belongs to (a
      * CSG tree's leaves all name the tree), so a hit can be traced back to the script. Read only
@@ -90,7 +88,6 @@ final class SceneGeometry {
             for (int i = 0; i < n; i++) order[i] = i;
             bvh = null;
         }
-        wide = bvh == null ? null : Bvh4.collapse(bvh);
         // Second pass: the flat data, laid out in traversal order for locality. A primitive is
         // copied from the first pass rather than flattened again, which would visit the scene's
         // objects in a scattered order.

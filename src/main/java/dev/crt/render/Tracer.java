@@ -28,7 +28,7 @@ final class Tracer {
     private final double[] materials;
     private final int[] items;
     private final int[] unbounded;
-    private final Bvh4 bvh;
+    private final Bvh bvh;
     private final Lights lights;
     private final BackgroundShader background;
 
@@ -37,7 +37,7 @@ final class Tracer {
     final Hit hit = new Hit();
     private final SurfacePoint surface = new SurfacePoint();
     private final CsgSolids.Scratch csgScratch;
-    private final Bvh4Walker walker;
+    private final BvhWalker walker;
     private final double[] colour = new double[3];
     /**
      * Per light, the last opaque item that blocked it: neighbouring shadow rays usually share their
@@ -84,13 +84,13 @@ final class Tracer {
         this.materials = geometry.materials.data;
         this.items = geometry.items;
         this.unbounded = geometry.unbounded;
-        this.bvh = geometry.wide;
+        this.bvh = geometry.bvh;
         this.lights = lights;
         this.background = background;
         csgScratch = new CsgSolids.Scratch(csg);
         lastOccluder = new int[lights.count];
         java.util.Arrays.fill(lastOccluder, NONE);
-        walker = new Bvh4Walker(bvh == null ? 1 : bvh.depth);
+        walker = new BvhWalker(bvh == null ? 1 : bvh.depth + 2);
         absorbing = geometry.materials.absorbing();
         csgScratch.absorbing = absorbing;
         footprints = !geometry.materials.textures.isEmpty();
@@ -400,7 +400,7 @@ final class Tracer {
             }
             return found;
         }
-        Bvh4Walker walk = walker;
+        BvhWalker walk = walker;
         if (!walk.start(bvh, ray, 0, tMax)) return found;
         for (int leaf = walk.nextNearest(tMax); leaf != BvhWalker.END; leaf = walk.nextNearest(tMax)) {
             for (int k = Bvh.leafFirst(leaf), end = k + Bvh.leafCount(leaf); k < end; k++) {
@@ -439,7 +439,7 @@ final class Tracer {
             }
             return product;
         }
-        Bvh4Walker walk = walker;
+        BvhWalker walk = walker;
         if (!walk.start(bvh, ray, 0, tMax)) return product;
         for (int leaf = walk.nextAny(tMax); leaf != BvhWalker.END; leaf = walk.nextAny(tMax)) {
             for (int k = Bvh.leafFirst(leaf), end = k + Bvh.leafCount(leaf); k < end; k++) {
