@@ -95,7 +95,7 @@ public final class BenchCharts {
         chart.getStyler().setLegendPosition(Styler.LegendPosition.InsideNE);
         chart.getStyler().setChartBackgroundColor(Color.WHITE);
         chart.getStyler().setMarkerSize(10);
-        Color[] colors = {POVRAY, CRT, GREY};
+        Color[] colors = {POVRAY, CRT, GREY, Color.BLACK};
         List<String> methods = new ArrayList<>();
         for (String[] r : rows) if (!methods.contains(r[0])) methods.add(r[0]);
         for (int m = 0; m < methods.size(); m++) {

@@ -109,46 +109,87 @@ public final class Quartic {
 
     // ---- isolating intervals -------------------------------------------------------------------
 
-    /**
-     * The quartic is monotone between consecutive roots of its derivative 4x³ + 2c2·x + c1, which
-     * is monotone between the roots ±√(−c2/6) of its own derivative: so each level's roots are
-     * isolated by the next level's, and each is refined inside a bracket where the function changes
-     * sign. A pair of roots however close keeps a critical point between them, so neither is lost.
-     */
+    /** {@link #isolate(double, double, double, double, double, double, double, int, double[])} over all of [−bound, bound]. */
     public static int isolate(double c2, double c1, double c0, double bound, double[] out) {
-        // The critical points of the quartic (the cubic's roots) in out[4…], piece by monotone piece
-        // of the cubic: [−bound, −i], [−i, i], [i, bound] with i = √(−c2/6), or all of it.
-        double lo = -bound;
-        int crit = 0;
-        double inflection = c2 < 0 ? Math.sqrt(-c2 / 6) : bound;
-        double a = lo, fa = cubic(c2, c1, a);
-        for (int piece = 0; piece < 3; piece++) {
-            double b = Math.min(bound, piece == 0 ? -inflection : piece == 1 ? inflection : bound);
-            if (!(b > a)) continue;
-            double fb = cubic(c2, c1, b);
-            double x = Double.NaN;
-            if (fa == 0) x = a;
-            else if (fb != 0 && (fa < 0) != (fb < 0)) x = refineCubic(c2, c1, a, b, fa);
-            if (x == x && (crit == 0 || out[3 + crit] != x)) out[4 + crit++] = x;
-            a = b;
-            fa = fb;
-        }
-        if (fa == 0 && (crit == 0 || out[3 + crit] != a)) out[4 + crit++] = a;
-        // Roots of the quartic between consecutive critical points.
+        return isolate(c2, c1, c0, -bound, bound, Double.NEGATIVE_INFINITY, Double.POSITIVE_INFINITY, 4, out);
+    }
+
+    /**
+     * The roots in [lo, hi] that lie in (from, to), in increasing order, at most {@code max} of
+     * them, into {@code out[0…]}; returns their count. The inflection points ±√(−c2/6) cut
+     * [lo, hi] into at most three pieces where the quartic is convex or concave, so a piece holds
+     * at most two roots: one when its ends differ in sign; none when the ends lie on the side its
+     * curvature bends away from; otherwise its one critical point (a root of the derivative
+     * 4x³ + 2c2·x + c1, monotone on the piece) splits it into two monotone halves, each refined
+     * where it changes sign. A pair of roots however close keeps that critical point between them,
+     * so neither is lost. The brackets depend on [lo, hi] alone, never on (from, to): a root is the
+     * same double whichever window asks for it; pieces wholly before {@code from} are not refined
+     * and the walk stops at the first root past {@code to} or after {@code max} roots.
+     */
+    public static int isolate(double c2, double c1, double c0, double lo, double hi, double from, double to, int max,
+            double[] out) {
+        if (!(lo <= hi) || max <= 0) return 0;
         int n = 0;
-        double x0 = lo, f0 = quartic(c2, c1, c0, x0);
-        for (int i = 0; i <= crit; i++) {
-            double x1 = i < crit ? out[4 + i] : bound;
-            if (x1 <= x0 && i < crit) continue;
-            double f1 = quartic(c2, c1, c0, x1);
-            if (f1 == 0) {
-                if (n == 0 || out[n - 1] != x1) out[n++] = x1;
-            } else if (f0 != 0 && (f0 < 0) != (f1 < 0)) {
-                out[n++] = refineQuartic(c2, c1, c0, x0, x1, f0);
+        double inflection = c2 < 0 ? Math.sqrt(-c2 / 6) : Double.POSITIVE_INFINITY;
+        double p0 = lo, f0 = quartic(c2, c1, c0, lo);
+        if (f0 == 0 && lo > from && lo < to) {
+            out[n++] = lo;
+            if (n == max) return n;
+        }
+        for (int piece = 0; piece < 3; piece++) {
+            double p1 = Math.min(hi, piece == 0 ? -inflection : piece == 1 ? inflection : hi);
+            if (!(p1 > p0)) continue;
+            if (p0 >= to) return n;
+            double f1 = quartic(c2, c1, c0, p1);
+            if (p1 > from) {
+                boolean convex = c2 >= 0 || piece != 1;
+                if (f0 != 0 && f1 != 0 && (f0 < 0) != (f1 < 0)) {
+                    double x = refineQuartic(c2, c1, c0, p0, p1, f0);
+                    if (x > from && x < to) {
+                        out[n++] = x;
+                        if (n == max) return n;
+                    } else if (x >= to) {
+                        return n;
+                    }
+                } else if (f0 != 0 && f1 != 0 && (convex ? f0 < 0 : f0 > 0)) {
+                    // Both ends on the side the piece bends away from: it never reaches zero.
+                } else {
+                    double g0 = cubic(c2, c1, p0), g1 = cubic(c2, c1, p1);
+                    double x0 = p0, fx0 = f0;
+                    if (g0 != 0 && g1 != 0 && (g0 < 0) != (g1 < 0)) {
+                        double c = refineCubic(c2, c1, p0, p1, g0);
+                        if (c > p0 && c < p1) {
+                            double fc = quartic(c2, c1, c0, c);
+                            n = monotone(c2, c1, c0, x0, fx0, c, fc, from, to, n, out);
+                            if (n == max || c >= to) return n;
+                            x0 = c;
+                            fx0 = fc;
+                        }
+                    }
+                    n = monotone(c2, c1, c0, x0, fx0, p1, f1, from, to, n, out);
+                    if (n == max) return n;
+                }
             }
-            x0 = x1;
+            p0 = p1;
             f0 = f1;
         }
+        return n;
+    }
+
+    /** The root of a monotone stretch [x0, x1] of the quartic (values f0, f1), if it lies in (from, to), appended at out[n]; returns the new count. */
+    private static int monotone(double c2, double c1, double c0, double x0, double f0, double x1, double f1, double from,
+            double to, int n, double[] out) {
+        if (!(x1 > from)) return n;
+        double x;
+        if (f1 == 0) {
+            if (n > 0 && out[n - 1] == x1) return n;
+            x = x1;
+        } else if (f0 != 0 && (f0 < 0) != (f1 < 0)) {
+            x = refineQuartic(c2, c1, c0, x0, x1, f0);
+        } else {
+            return n;
+        }
+        if (x > from && x < to) out[n++] = x;
         return n;
     }
 

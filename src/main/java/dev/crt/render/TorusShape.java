@@ -10,12 +10,13 @@ import dev.crt.scene.Torus;
  * The torus, intersected in a local frame where it lies about the origin with its axis along z
  * (scene units). A line is first moved to its closest approach to the centre and its direction
  * made unit: the quartic in the distance s from there is then depressed (no cubic term) and its
- * coefficients are of the torus's size however far away the ray starts; a line that passes
- * farther than R + r from the centre is dismissed before any quartic. The roots come from
- * {@link Quartic#isolate} (the measurements of docs/benchmarks.md chose it), and the intervals
- * inside the solid are read from the inside test at the midpoints between roots, so a spindle
- * torus's inner sheet (the quartic's other branch) and a doubled tangent root cannot swap inside
- * for outside.
+ * coefficients are of the torus's size however far away the ray starts. Its roots are sought only
+ * where the line is inside the slab, cylinder and sphere around the torus at once (a line that
+ * misses that stretch costs no quartic), by {@link Quartic#isolate} (the measurements of
+ * docs/benchmarks.md chose it). CSG's {@link #span} reads the intervals inside the solid from the
+ * inside test at the midpoints between all roots, so a spindle torus's inner sheet and a doubled
+ * tangent root cannot swap inside for outside; a closest hit or a shadow ray ({@link #firstHit})
+ * refines only the first root in its window that lies on the solid's boundary.
  *
  * <p>Data after the {@link Affine} placement: R (major), r (minor).
  */
@@ -54,11 +55,8 @@ final class TorusShape {
         dz /= length;
         double s0 = -(ray.lox * dx + ray.loy * dy + ray.loz * dz);
         double ox = ray.lox + s0 * dx, oy = ray.loy + s0 * dy, oz = ray.loz + s0 * dz;
-        double g = ox * ox + oy * oy + oz * oz;
-        double reach = big + small;
-        if (g > reach * reach) return false;
-        if (!mayCross(ox, oy, oz, dx, dy, dz, reach, small)) return false;
-        int n = roots(METHOD, ox, oy, oz, dx, dy, dz, big, small, roots);
+        int n = roots(METHOD, ox, oy, oz, dx, dy, dz, big, small, Double.NEGATIVE_INFINITY, Double.POSITIVE_INFINITY,
+                false, roots);
         if (n == 0) return false;
         out.count = 0;
         out.surface = false;
@@ -79,12 +77,12 @@ final class TorusShape {
     }
 
     /**
-     * Whether the ray can meet the torus with tMin &lt; t &lt; tMax: false when the part of its line
-     * within the slab |z| ≤ r and the cylinder ρ ≤ R + r (widened as in {@link #mayCross}, and by
-     * 2⁻²⁰ of R + r more) lies wholly outside that range. Every root {@link #span} would find lies
-     * in that part, so a closest hit or shadow ray that cannot reach it skips the quartic.
+     * The nearest crossing of the torus's surface with 0 &lt; t &lt; tMax, or NaN: the first root of
+     * the quartic in that window that bounds the solid, without refining the roots behind it or
+     * beyond it. It is the same double as the first crossing {@link #span} gives (both refine the
+     * same brackets), so a torus looks the same alone and in CSG.
      */
-    static boolean mayHit(double[] a, int o, Ray ray, double tMin, double tMax) {
+    static double firstHit(double[] a, int o, Ray ray, double tMax, double[] roots) {
         ray.toLocal(a, o);
         double big = a[o + Affine.SIZE], small = a[o + Affine.SIZE + 1];
         double dx = ray.ldx, dy = ray.ldy, dz = ray.ldz;
@@ -94,12 +92,35 @@ final class TorusShape {
         dz /= length;
         double s0 = -(ray.lox * dx + ray.loy * dy + ray.loz * dz);
         double ox = ray.lox + s0 * dx, oy = ray.loy + s0 * dy, oz = ray.loz + s0 * dz;
+        if (roots(METHOD, ox, oy, oz, dx, dy, dz, big, small, -s0, tMax * length - s0, true, roots) == 0) {
+            return Double.NaN;
+        }
+        double t = (roots[0] + s0) / length;
+        return t > 0 && t < tMax ? t : Double.NaN;
+    }
+
+    /**
+     * The roots s of the torus quartic along the line o + s·d (|d| = 1, o the closest approach to
+     * the centre, so o·d = 0) that lie in (from, to), in increasing order, into {@code out}: with
+     * g = |o|² and k = g + R² − r²,
+     * s⁴ + (2k − 4R²(dx² + dy²))s² − 8R²(ox·dx + oy·dy)s + k² − 4R²(ox² + oy²) = 0.
+     * Every root lies where the line is within the slab |z| ≤ r, the cylinder ρ ≤ R + r and the
+     * sphere |p| ≤ R + r at once: a line that misses that stretch (widened by 2⁻²⁰ of R + r, so
+     * that a grazing root stays inside) has no root, and {@link Quartic#ISOLATE} searches that
+     * stretch only (the other methods, compared in docs/benchmarks.md, all of [−(R + r), R + r]).
+     * With {@code boundary}, only the first root that bounds the solid is written: a spindle
+     * torus's inner sheet, the quartic's points with |p|² &lt; r² − R², lies inside the solid
+     * and is passed over.
+     */
+    static int roots(int method, double ox, double oy, double oz, double dx, double dy, double dz, double big,
+            double small, double from, double to, boolean boundary, double[] out) {
+        double g = ox * ox + oy * oy + oz * oz;
         double reach = big + small;
-        if (ox * ox + oy * oy + oz * oz > reach * reach) return false;
+        if (g > reach * reach) return 0;
         double slack = 0x1p-30 * reach;
         double lo = Double.NEGATIVE_INFINITY, hi = Double.POSITIVE_INFINITY;
         if (dz == 0) {
-            if (Math.abs(oz) > small + slack) return false;
+            if (Math.abs(oz) > small + slack) return 0;
         } else {
             double p = (-small - slack - oz) / dz, q = (small + slack - oz) / dz;
             lo = Math.min(p, q);
@@ -110,67 +131,39 @@ final class TorusShape {
         double wide = reach + slack;
         double qc = ox * ox + oy * oy - wide * wide;
         if (qa == 0) {
-            if (qc > 0) return false;
+            if (qc > 0) return 0;
         } else {
             double disc = qb * qb - qa * qc;
-            if (disc < 0) return false;
+            if (disc < 0) return 0;
             double root = Math.sqrt(disc);
             lo = Math.max(lo, (-qb - root) / qa);
             hi = Math.min(hi, (-qb + root) / qa);
         }
-        // Also within the sphere of radius R + r, where the quartic's roots are sought.
-        double half = Math.sqrt(Math.max(0, reach * reach - (ox * ox + oy * oy + oz * oz)));
-        lo = Math.max(lo, -half);
-        hi = Math.min(hi, half);
+        double half = Math.sqrt(Math.max(0, reach * reach - g));
         double margin = 0x1p-20 * reach;
-        lo -= margin;
-        hi += margin;
-        if (!(lo <= hi)) return false;
-        return (hi + s0) / length > tMin && (lo + s0) / length < tMax;
-    }
-
-    /**
-     * Whether the line can meet the torus at all: it must be within the slab |z| ≤ r and within
-     * the cylinder ρ ≤ R + r at once. Most lines that reach a torus's box but miss the torus fail
-     * here, before any quartic; the test is widened by a hair so it never drops a grazing hit.
-     */
-    private static boolean mayCross(double ox, double oy, double oz, double dx, double dy, double dz, double reach,
-            double small) {
-        double slack = 0x1p-30 * reach;
-        double lo = Double.NEGATIVE_INFINITY, hi = Double.POSITIVE_INFINITY;
-        if (dz == 0) {
-            if (Math.abs(oz) > small + slack) return false;
-        } else {
-            double a = (-small - slack - oz) / dz, b = (small + slack - oz) / dz;
-            lo = Math.min(a, b);
-            hi = Math.max(a, b);
-        }
-        double qa = dx * dx + dy * dy;
-        double qb = ox * dx + oy * dy;
-        double wide = reach + slack;
-        double qc = ox * ox + oy * oy - wide * wide;
-        if (qa == 0) return qc <= 0 && lo <= hi;
-        double disc = qb * qb - qa * qc;
-        if (disc < 0) return false;
-        double root = Math.sqrt(disc);
-        return Math.max(lo, (-qb - root) / qa) <= Math.min(hi, (-qb + root) / qa);
-    }
-
-    /**
-     * The roots s of the torus quartic along the line o + s·d (|d| = 1, o the closest approach to
-     * the centre, so o·d = 0): with g = |o|² and k = g + R² − r²,
-     * s⁴ + (2k − 4R²(dx² + dy²))s² − 8R²(ox·dx + oy·dy)s + k² − 4R²(ox² + oy²) = 0.
-     */
-    static int roots(int method, double ox, double oy, double oz, double dx, double dy, double dz, double big,
-            double small, double[] out) {
-        double g = ox * ox + oy * oy + oz * oz;
+        lo = Math.max(lo, -half) - margin;
+        hi = Math.min(hi, half) + margin;
+        if (!(lo <= hi) || !(from < hi) || !(to > lo)) return 0;
         double k = g + (big - small) * (big + small);
         double r2 = 4 * big * big;
-        double c2 = 2 * k - r2 * (dx * dx + dy * dy);
-        double c1 = -2 * r2 * (ox * dx + oy * dy);
+        double c2 = 2 * k - r2 * qa;
+        double c1 = -2 * r2 * qb;
         double c0 = k * k - r2 * (ox * ox + oy * oy);
-        double bound = (big + small) * (1 + 0x1p-40);
-        return Quartic.solve(method, c2, c1, c0, bound, out);
+        if (method != Quartic.ISOLATE) {
+            int n = Quartic.solve(method, c2, c1, c0, reach * (1 + 0x1p-40), out);
+            int kept = 0;
+            for (int i = 0; i < n; i++) {
+                if (out[i] > from && out[i] < to && !(boundary && out[i] * out[i] < -k)) out[kept++] = out[i];
+            }
+            return boundary ? Math.min(kept, 1) : kept;
+        }
+        if (!boundary) return Quartic.isolate(c2, c1, c0, lo, hi, from, to, 4, out);
+        // |p|² = g + s² on this line, and r² − R² − g = −k: the inner sheet is where s² < −k.
+        while (Quartic.isolate(c2, c1, c0, lo, hi, from, to, 1, out) == 1) {
+            if (!(out[0] * out[0] < -k)) return 1;
+            from = out[0];
+        }
+        return 0;
     }
 
     private static boolean inside(double x, double y, double z, double big, double small) {
