@@ -128,6 +128,21 @@ public final class Quartic {
      */
     public static int isolate(double c2, double c1, double c0, double lo, double hi, double from, double to, int max,
             double[] out) {
+        return walk(c2, c1, c0, lo, hi, from, to, max, false, out);
+    }
+
+    /**
+     * Whether the quartic has a root in [lo, hi] that lies in (from, to), as {@link #isolate}
+     * finds them: a bracket wholly inside the window answers without being refined.
+     */
+    public static boolean crosses(double c2, double c1, double c0, double lo, double hi, double from, double to,
+            double[] scratch) {
+        return walk(c2, c1, c0, lo, hi, from, to, 1, true, scratch) > 0;
+    }
+
+    /** {@link #isolate}; with {@code decide}, a sign change wholly inside (from, to) is written as NaN unrefined. */
+    private static int walk(double c2, double c1, double c0, double lo, double hi, double from, double to, int max,
+            boolean decide, double[] out) {
         if (!(lo <= hi) || max <= 0) return 0;
         int n = 0;
         double inflection = c2 < 0 ? Math.sqrt(-c2 / 6) : Double.POSITIVE_INFINITY;
@@ -144,7 +159,11 @@ public final class Quartic {
             if (p1 > from) {
                 boolean convex = c2 >= 0 || piece != 1;
                 if (f0 != 0 && f1 != 0 && (f0 < 0) != (f1 < 0)) {
-                    double x = refineQuartic(c2, c1, c0, p0, p1, f0);
+                    double x = decide && p0 >= from && p1 <= to ? Double.NaN : refineQuartic(c2, c1, c0, p0, p1, f0, convex);
+                    if (x != x) {
+                        out[n++] = x;
+                        return n;
+                    }
                     if (x > from && x < to) {
                         out[n++] = x;
                         if (n == max) return n;
@@ -160,13 +179,13 @@ public final class Quartic {
                         double c = refineCubic(c2, c1, p0, p1, g0);
                         if (c > p0 && c < p1) {
                             double fc = quartic(c2, c1, c0, c);
-                            n = monotone(c2, c1, c0, x0, fx0, c, fc, from, to, n, out);
+                            n = monotone(c2, c1, c0, x0, fx0, c, fc, convex, from, to, decide, n, out);
                             if (n == max || c >= to) return n;
                             x0 = c;
                             fx0 = fc;
                         }
                     }
-                    n = monotone(c2, c1, c0, x0, fx0, p1, f1, from, to, n, out);
+                    n = monotone(c2, c1, c0, x0, fx0, p1, f1, convex, from, to, decide, n, out);
                     if (n == max) return n;
                 }
             }
@@ -177,15 +196,19 @@ public final class Quartic {
     }
 
     /** The root of a monotone stretch [x0, x1] of the quartic (values f0, f1), if it lies in (from, to), appended at out[n]; returns the new count. */
-    private static int monotone(double c2, double c1, double c0, double x0, double f0, double x1, double f1, double from,
-            double to, int n, double[] out) {
+    private static int monotone(double c2, double c1, double c0, double x0, double f0, double x1, double f1,
+            boolean convex, double from, double to, boolean decide, int n, double[] out) {
         if (!(x1 > from)) return n;
         double x;
         if (f1 == 0) {
             if (n > 0 && out[n - 1] == x1) return n;
             x = x1;
         } else if (f0 != 0 && (f0 < 0) != (f1 < 0)) {
-            x = refineQuartic(c2, c1, c0, x0, x1, f0);
+            if (decide && x0 >= from && x1 <= to) {
+                out[n] = Double.NaN;
+                return n + 1;
+            }
+            x = refineQuartic(c2, c1, c0, x0, x1, f0, convex);
         } else {
             return n;
         }
@@ -199,21 +222,25 @@ public final class Quartic {
 
     /** The root of the cubic in [a, b], where it changes sign (fa = its value at a), to full precision. */
     private static double refineCubic(double c2, double c1, double a, double b, double fa) {
-        return refine(c2, c1, 0, a, b, fa, false);
+        return refine(c2, c1, 0, a, b, fa, false, 0.5 * (a + b));
     }
 
-    /** The root of the quartic in [a, b], where it changes sign (fa = its value at a), to full precision. */
-    private static double refineQuartic(double c2, double c1, double c0, double a, double b, double fa) {
-        return refine(c2, c1, c0, a, b, fa, true);
+    /**
+     * The root of the quartic in [a, b], where it changes sign (fa = its value at a) and bends
+     * one way ({@code convex}: upwards), to full precision. Newton starts from the end where the
+     * quartic has the sign of its curvature: from there it never overshoots the root.
+     */
+    private static double refineQuartic(double c2, double c1, double c0, double a, double b, double fa, boolean convex) {
+        return refine(c2, c1, c0, a, b, fa, true, (fa > 0) == convex ? a : b);
     }
 
     /**
      * Safeguarded Newton on the depressed quartic ({@code quartic}) or on its derivative, the cubic
      * 4x³ + 2c2·x + c1: Newton steps while they stay inside the shrinking sign-change bracket
-     * [a, b] and halve it at least, bisection otherwise.
+     * [a, b] and halve it at least, bisection otherwise; from x.
      */
-    private static double refine(double c2, double c1, double c0, double a, double b, double fa, boolean quartic) {
-        double x = 0.5 * (a + b);
+    private static double refine(double c2, double c1, double c0, double a, double b, double fa, boolean quartic,
+            double x) {
         for (int i = 0; i < 200; i++) {
             double f = quartic ? quartic(c2, c1, c0, x) : cubic(c2, c1, x);
             if (f == 0) return x;

@@ -273,7 +273,7 @@ final class Shapes {
             case MESH:
                 return MeshShape.anyHit(a, o, ray, tMax, scratch, meshes[(int) a[o + Affine.SIZE]]);
             case TORUS:
-                return !Double.isNaN(TorusShape.firstHit(a, o, ray, tMax, scratch.roots));
+                return TorusShape.anyHit(a, o, ray, tMax, scratch.roots);
             case SPHERE, BOX, PLANE, MAPPED_SPHERE, MAPPED_BOX, CONE, EMPTY:
                 break;
             default:

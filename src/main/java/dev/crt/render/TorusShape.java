@@ -23,6 +23,8 @@ import dev.crt.scene.Torus;
 final class TorusShape {
     /** The quartic method tori use (docs/benchmarks.md, "Torus roots"). */
     static final int METHOD = Quartic.ISOLATE;
+    /** What {@link #roots} is asked for: every root, the first that bounds the solid, or whether there is one. */
+    static final int ALL = 0, FIRST = 1, ANY = 2;
 
     private TorusShape() {}
 
@@ -56,7 +58,7 @@ final class TorusShape {
         double s0 = -(ray.lox * dx + ray.loy * dy + ray.loz * dz);
         double ox = ray.lox + s0 * dx, oy = ray.loy + s0 * dy, oz = ray.loz + s0 * dz;
         int n = roots(METHOD, ox, oy, oz, dx, dy, dz, big, small, Double.NEGATIVE_INFINITY, Double.POSITIVE_INFINITY,
-                false, roots);
+                ALL, roots);
         if (n == 0) return false;
         out.count = 0;
         out.surface = false;
@@ -83,20 +85,43 @@ final class TorusShape {
      * same brackets), so a torus looks the same alone and in CSG.
      */
     static double firstHit(double[] a, int o, Ray ray, double tMax, double[] roots) {
+        return crossing(a, o, ray, tMax, FIRST, roots) ? roots[0] : Double.NaN;
+    }
+
+    /**
+     * Whether the surface crosses the ray with 0 &lt; t &lt; tMax, as {@link #firstHit} would find:
+     * the question of a shadow ray, where a sign change of the quartic inside the window answers
+     * without refining its root (on a ring torus every root bounds the solid).
+     */
+    static boolean anyHit(double[] a, int o, Ray ray, double tMax, double[] roots) {
+        return crossing(a, o, ray, tMax, ANY, roots);
+    }
+
+    /** Whether there is a crossing with 0 &lt; t &lt; tMax; its t into roots[0] when refined (NaN when not). */
+    private static boolean crossing(double[] a, int o, Ray ray, double tMax, int want, double[] roots) {
         ray.toLocal(a, o);
         double big = a[o + Affine.SIZE], small = a[o + Affine.SIZE + 1];
         double dx = ray.ldx, dy = ray.ldy, dz = ray.ldz;
-        double length = Math.sqrt(dx * dx + dy * dy + dz * dz);
+        // Most rays that reach the torus's box pass outside its sphere: |o × d|² / |d|² is the
+        // squared distance of the line from the centre, tested before any square root or division
+        // (with room for its rounding; the exact test follows).
+        double cx = ray.loy * dz - ray.loz * dy, cy = ray.loz * dx - ray.lox * dz, cz = ray.lox * dy - ray.loy * dx;
+        double dd = dx * dx + dy * dy + dz * dz, reach = big + small;
+        if (cx * cx + cy * cy + cz * cz > reach * reach * dd * (1 + 0x1p-20)
+                + 0x1p-40 * (ray.lox * ray.lox + ray.loy * ray.loy + ray.loz * ray.loz) * dd) {
+            return false;
+        }
+        double length = Math.sqrt(dd);
         dx /= length;
         dy /= length;
         dz /= length;
         double s0 = -(ray.lox * dx + ray.loy * dy + ray.loz * dz);
         double ox = ray.lox + s0 * dx, oy = ray.loy + s0 * dy, oz = ray.loz + s0 * dz;
-        if (roots(METHOD, ox, oy, oz, dx, dy, dz, big, small, -s0, tMax * length - s0, true, roots) == 0) {
-            return Double.NaN;
-        }
+        if (roots(METHOD, ox, oy, oz, dx, dy, dz, big, small, -s0, tMax * length - s0, want, roots) == 0) return false;
+        if (roots[0] != roots[0]) return true;
         double t = (roots[0] + s0) / length;
-        return t > 0 && t < tMax ? t : Double.NaN;
+        roots[0] = t;
+        return t > 0 && t < tMax;
     }
 
     /**
@@ -108,12 +133,12 @@ final class TorusShape {
      * sphere |p| ≤ R + r at once: a line that misses that stretch (widened by 2⁻²⁰ of R + r, so
      * that a grazing root stays inside) has no root, and {@link Quartic#ISOLATE} searches that
      * stretch only (the other methods, compared in docs/benchmarks.md, all of [−(R + r), R + r]).
-     * With {@code boundary}, only the first root that bounds the solid is written: a spindle
+     * With {@link #FIRST}, only the first root that bounds the solid is written: a spindle
      * torus's inner sheet, the quartic's points with |p|² &lt; r² − R², lies inside the solid
-     * and is passed over.
+     * and is passed over; with {@link #ANY}, a NaN in its place means there is one, unrefined.
      */
     static int roots(int method, double ox, double oy, double oz, double dx, double dy, double dz, double big,
-            double small, double from, double to, boolean boundary, double[] out) {
+            double small, double from, double to, int want, double[] out) {
         double g = ox * ox + oy * oy + oz * oz;
         double reach = big + small;
         if (g > reach * reach) return 0;
@@ -153,11 +178,13 @@ final class TorusShape {
             int n = Quartic.solve(method, c2, c1, c0, reach * (1 + 0x1p-40), out);
             int kept = 0;
             for (int i = 0; i < n; i++) {
-                if (out[i] > from && out[i] < to && !(boundary && out[i] * out[i] < -k)) out[kept++] = out[i];
+                if (out[i] > from && out[i] < to && !(want != ALL && out[i] * out[i] < -k)) out[kept++] = out[i];
             }
-            return boundary ? Math.min(kept, 1) : kept;
+            return want != ALL ? Math.min(kept, 1) : kept;
         }
-        if (!boundary) return Quartic.isolate(c2, c1, c0, lo, hi, from, to, 4, out);
+        if (want == ALL) return Quartic.isolate(c2, c1, c0, lo, hi, from, to, 4, out);
+        // A line with k > 0 (every line, on a ring torus) misses the inner sheet: any root will do.
+        if (want == ANY && k > 0) return Quartic.crosses(c2, c1, c0, lo, hi, from, to, out) ? 1 : 0;
         // |p|² = g + s² on this line, and r² − R² − g = −k: the inner sheet is where s² < −k.
         while (Quartic.isolate(c2, c1, c0, lo, hi, from, to, 1, out) == 1) {
             if (!(out[0] * out[0] < -k)) return 1;

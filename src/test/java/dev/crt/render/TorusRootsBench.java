@@ -122,7 +122,8 @@ public final class TorusRootsBench {
         double ox = c.ox + s0 * dx, oy = c.oy + s0 * dy, oz = c.oz + s0 * dz;
         boolean first = method == FIRST;
         int k = TorusShape.roots(first ? Quartic.ISOLATE : method, ox, oy, oz, dx, dy, dz, c.big, c.small,
-                first ? -s0 : Double.NEGATIVE_INFINITY, Double.POSITIVE_INFINITY, first, out);
+                first ? -s0 : Double.NEGATIVE_INFINITY, Double.POSITIVE_INFINITY, first ? TorusShape.FIRST : TorusShape.ALL,
+                out);
         for (int i = 0; i < k; i++) out[i] = (out[i] + s0) / length;
         return k;
     }
