@@ -176,16 +176,18 @@ public final class Quartic {
                     double g0 = cubic(c2, c1, p0), g1 = cubic(c2, c1, p1);
                     double x0 = p0, fx0 = f0;
                     if (g0 != 0 && g1 != 0 && (g0 < 0) != (g1 < 0)) {
-                        double c = refineCubic(c2, c1, p0, p1, g0);
+                        // Both ends of one sign: a point of the other sign, or a bound on the
+                        // extremum, answers before the critical point is refined to the last bit.
+                        double c = f0 != 0 && f1 != 0 ? split(c2, c1, c0, p0, p1, g0, f0) : refineCubic(c2, c1, p0, p1, g0);
                         if (c > p0 && c < p1) {
                             double fc = quartic(c2, c1, c0, c);
-                            n = monotone(c2, c1, c0, x0, fx0, c, fc, convex, from, to, decide, n, out);
+                            n = stretch(c2, c1, c0, x0, fx0, c, fc, convex, from, to, decide, n, out);
                             if (n == max || c >= to) return n;
                             x0 = c;
                             fx0 = fc;
                         }
                     }
-                    n = monotone(c2, c1, c0, x0, fx0, p1, f1, convex, from, to, decide, n, out);
+                    n = stretch(c2, c1, c0, x0, fx0, p1, f1, convex, from, to, decide, n, out);
                     if (n == max) return n;
                 }
             }
@@ -195,8 +197,11 @@ public final class Quartic {
         return n;
     }
 
-    /** The root of a monotone stretch [x0, x1] of the quartic (values f0, f1), if it lies in (from, to), appended at out[n]; returns the new count. */
-    private static int monotone(double c2, double c1, double c0, double x0, double f0, double x1, double f1,
+    /**
+     * The root of a stretch [x0, x1] of the quartic (values f0, f1) that holds at most one, if it
+     * lies in (from, to), appended at out[n]; returns the new count.
+     */
+    private static int stretch(double c2, double c1, double c0, double x0, double f0, double x1, double f1,
             boolean convex, double from, double to, boolean decide, int n, double[] out) {
         if (!(x1 > from)) return n;
         double x;
@@ -214,6 +219,35 @@ public final class Quartic {
         }
         if (x > from && x < to) out[n++] = x;
         return n;
+    }
+
+    /**
+     * Within a piece [a, b] where the quartic bends one way and is f0 (≠ 0) at both ends, and its
+     * derivative changes sign (ga at a): Newton steps towards the extremum as {@link #refine} takes
+     * them on the derivative, stopping at the first point where the quartic has the other sign
+     * (it splits the piece into two stretches of one root each), or with NaN as soon as the
+     * tangent at a step shows that the extremum keeps f0's sign (the quartic lies beyond its
+     * tangent, and the extremum lies within the bracket); otherwise the extremum itself.
+     */
+    private static double split(double c2, double c1, double c0, double a, double b, double ga, double f0) {
+        double x = 0.5 * (a + b);
+        for (int i = 0; i < 200; i++) {
+            double g = cubic(c2, c1, x);
+            if (g == 0) return x;
+            if ((g < 0) == (ga < 0)) a = x;
+            else b = x;
+            double x2 = x * x;
+            double f = (x2 + c2) * x2 + c1 * x + c0;
+            if (f != 0 && (f < 0) != (f0 < 0)) return x;
+            double reach = Math.abs(g) * (b - a) + 0x1p-40 * (x2 * x2 + Math.abs(c2) * x2 + Math.abs(c1 * x) + Math.abs(c0));
+            if (f0 > 0 ? f > reach : f < -reach) return Double.NaN;
+            double next = x - g / (12 * x2 + 2 * c2);
+            if (Math.abs(next - x) <= 2 * Math.ulp(x)) return x;
+            if (!(next > a && next < b) || Math.abs(next - x) > 0.5 * (b - a)) next = 0.5 * (a + b);
+            if (b - a <= 2 * Math.ulp(Math.max(Math.abs(a), Math.abs(b)))) return next;
+            x = next;
+        }
+        return x;
     }
 
     private static double cubic(double c2, double c1, double x) {
