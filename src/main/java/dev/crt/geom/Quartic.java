@@ -119,10 +119,11 @@ public final class Quartic {
      * them, into {@code out[0…]}; returns their count. The inflection points ±√(−c2/6) cut
      * [lo, hi] into at most three pieces where the quartic is convex or concave, so a piece holds
      * at most two roots: one when its ends differ in sign; none when the ends lie on the side its
-     * curvature bends away from; otherwise its one critical point (a root of the derivative
-     * 4x³ + 2c2·x + c1, monotone on the piece) splits it into two monotone halves, each refined
-     * where it changes sign. A pair of roots however close keeps that critical point between them,
-     * so neither is lost. The brackets depend on [lo, hi] alone, never on (from, to): a root is the
+     * curvature bends away from; otherwise its extremum (a root of the derivative
+     * 4x³ + 2c2·x + c1, monotone on the piece) decides, sought only until a point of the other
+     * sign splits the piece into two stretches of one root each, or a tangent shows the extremum
+     * keeps the ends' sign. A pair of roots however close keeps the extremum between them, so
+     * neither is lost. The brackets depend on [lo, hi] alone, never on (from, to): a root is the
      * same double whichever window asks for it; pieces wholly before {@code from} are not refined
      * and the walk stops at the first root past {@code to} or after {@code max} roots.
      */
