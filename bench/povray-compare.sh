@@ -2,9 +2,10 @@
 # Renders the benchmark scene with CRT and with POV-Ray 3.7, alternating, and prints the ratio of
 # the medians of the whole-process wall-clock times (CRT / POV-Ray; below 1.0 means CRT is faster).
 #
-#   bench/povray-compare.sh [--runs N] [--warmup N] [--width W --height H] [--out DIR]
+#   bench/povray-compare.sh [--scene NAME] [--runs N] [--warmup N] [--width W --height H] [--out DIR]
 #
-# Scenes: scenes/box-field.crt and its hand-written twin bench/povray/box-field.pov.
+# Scenes: scenes/box-field.crt and its hand-written twin bench/povray/box-field.pov; with --scene,
+# scenes/NAME.crt or bench/scenes/NAME.crt and bench/povray/NAME.pov (e.g. tori: 1,000 tori).
 # Both use every core (CRT's default; POV-Ray +WT<cores>), one sample per pixel, PNG output.
 # POV-Ray is installed from Debian (package povray) when missing and this runs as root.
 # Results: a table on stdout (wall-clock and CPU seconds of each run, the render phase alone, CRT
@@ -18,10 +19,12 @@ warmup=1
 width=1280
 height=720
 out="$here/results"
+scene=box-field
 
-usage() { sed -n '2,11p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'; }
+usage() { sed -n '2,12p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'; }
 while [ $# -gt 0 ]; do
   case "$1" in
+    --scene) scene="$2"; shift 2 ;;
     --runs) runs="$2"; shift 2 ;;
     --warmup) warmup="$2"; shift 2 ;;
     --width) width="$2"; shift 2 ;;
@@ -32,8 +35,13 @@ while [ $# -gt 0 ]; do
   esac
 done
 
-crt_scene="$root/scenes/box-field.crt"
-pov_scene="$here/povray/box-field.pov"
+crt_scene="$root/scenes/$scene.crt"
+[ -f "$crt_scene" ] || crt_scene="$here/scenes/$scene.crt"
+pov_scene="$here/povray/$scene.pov"
+if [ ! -f "$crt_scene" ] || [ ! -f "$pov_scene" ]; then
+  echo "povray-compare: no scene '$scene': need scenes/$scene.crt or bench/scenes/$scene.crt, and bench/povray/$scene.pov" >&2
+  exit 2
+fi
 cores="$(nproc)"
 
 # --- POV-Ray 3.7 --------------------------------------------------------------------------------
@@ -65,14 +73,14 @@ pov_version="$(povray --version 2>&1 | grep -m1 '^POV-Ray' || echo 'POV-Ray (unk
 
 mkdir -p "$out"
 out="$(cd "$out" && pwd)"
-csv="$out/povray-compare.csv"
+if [ "$scene" = box-field ]; then csv="$out/povray-compare.csv"; else csv="$out/povray-compare-$scene.csv"; fi
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
 
-crt_cmd=("$root/crt" render "$crt_scene" -o "$out/box-field-crt.png" --width "$width" --height "$height" --stats)
+crt_cmd=("$root/crt" render "$crt_scene" -o "$out/$scene-crt.png" --width "$width" --height "$height" --stats)
 # -D no display, -A no antialiasing (NB: +A0 would turn antialiasing ON with threshold 0),
 # +WT work threads, +FN PNG, File_Gamma=1.0 to write colours as computed like CRT's gamma 1.
-pov_cmd=(povray -D -A "+WT$cores" "+W$width" "+H$height" +FN File_Gamma=1.0 "+I$pov_scene" "+O$out/box-field-povray.png")
+pov_cmd=(povray -D -A "+WT$cores" "+W$width" "+H$height" +FN File_Gamma=1.0 "+I$pov_scene" "+O$out/$scene-povray.png")
 
 # Runs a command; prints its whole-process wall-clock time and its CPU time (user + system, all
 # threads), in seconds, separated by a space. The command's own output goes to the log file $1.
@@ -95,7 +103,11 @@ median() { printf '%s\n' "$@" | sort -g | awk '{a[NR]=$1} END {print (NR % 2) ? 
 echo "machine: $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2- | sed 's/^ //'), $cores cores, $(awk '/MemTotal/ {printf "%.0f GiB", $2/1048576}' /proc/meminfo)"
 echo "java:    $("$root/crt" --version | sed -n 2p) (the one ./crt runs)"
 echo "povray:  $pov_version"
-echo "scene:   box-field, ${width}x${height}, 1 sample per pixel, recursion depth 5 (POV-Ray max_trace_level 6)"
+if [ "$scene" = box-field ]; then
+  echo "scene:   box-field, ${width}x${height}, 1 sample per pixel, recursion depth 5 (POV-Ray max_trace_level 6)"
+else
+  echo "scene:   $scene (${crt_scene#"$root/"} and ${pov_scene#"$root/"}), ${width}x${height}, 1 sample per pixel"
+fi
 echo "load:    $(cut -d' ' -f1-3 /proc/loadavg) (1, 5, 15 min) before the runs"
 echo "CRT:     ${crt_cmd[*]}"
 echo "POV-Ray: (cd $out &&) ${pov_cmd[*]}"
@@ -166,8 +178,8 @@ if awk -v r="$ratio" 'BEGIN {exit !(r <= 1.0)}'; then
 else
   echo "goal NOT met: CRT takes longer than POV-Ray"
 fi
-echo "images: $out/box-field-crt.png and $out/box-field-povray.png"
-if [ -f "$out/box-field-crt.png" ] && [ -f "$out/box-field-povray.png" ]; then
-  echo "difference: $(java "$here/tools/ImageCompare.java" "$out/box-field-crt.png" "$out/box-field-povray.png" 2>&1)"
+echo "images: $out/$scene-crt.png and $out/$scene-povray.png"
+if [ -f "$out/$scene-crt.png" ] && [ -f "$out/$scene-povray.png" ]; then
+  echo "difference: $(java "$here/tools/ImageCompare.java" "$out/$scene-crt.png" "$out/$scene-povray.png" 2>&1)"
 fi
 echo "load:    $(cut -d' ' -f1-3 /proc/loadavg) (1, 5, 15 min) after the runs"

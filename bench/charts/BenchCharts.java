@@ -22,8 +22,8 @@ import org.knowm.xchart.style.markers.SeriesMarkers;
  * <pre>
  *   java -cp XCHART_CLASSPATH bench/charts/BenchCharts.java RESULTS_DIR IMAGES_DIR
  * </pre>
- * Writes bench-povray.png, bench-scaling.png, bench-mrays.png, bench-csg.png and bench-torus-roots.png
- * into IMAGES_DIR.
+ * Writes bench-povray.png, bench-scaling.png, bench-mrays.png, bench-csg.png, bench-torus-roots.png
+ * and bench-mesh-render.png into IMAGES_DIR.
  */
 public final class BenchCharts {
     private static final Color CRT = new Color(0x2b, 0x6c, 0xb0);
@@ -57,6 +57,12 @@ public final class BenchCharts {
             torus(read(torus), images.resolve("bench-torus-roots.png"));
         } else {
             System.err.println("no " + torus + ": run TorusRootsBench (docs/benchmarks.md, torus roots)");
+        }
+        Path meshes = results.resolve("mesh-render-cpu.csv");
+        if (Files.exists(meshes)) {
+            meshRender(read(meshes), images.resolve("bench-mesh-render.png"));
+        } else {
+            System.err.println("no " + meshes + ": run bench/mesh-render-cpu.sh first");
         }
         Path csg = results.resolve("csg-scaling.csv");
         Path before = results.resolve("csg-scaling-before.csv");
@@ -95,7 +101,7 @@ public final class BenchCharts {
         chart.getStyler().setLegendPosition(Styler.LegendPosition.InsideNE);
         chart.getStyler().setChartBackgroundColor(Color.WHITE);
         chart.getStyler().setMarkerSize(10);
-        Color[] colors = {POVRAY, CRT, GREY};
+        Color[] colors = {POVRAY, CRT, GREY, Color.BLACK};
         List<String> methods = new ArrayList<>();
         for (String[] r : rows) if (!methods.contains(r[0])) methods.add(r[0]);
         for (int m = 0; m < methods.size(); m++) {
@@ -160,6 +166,23 @@ public final class BenchCharts {
         series(chart, "render", n, column(rows, 3), CRT);
         series(chart, "BVH build", n, column(rows, 2), POVRAY);
         series(chart, "compile (script evaluation)", n, column(rows, 1), GREY);
+        save(chart, file);
+    }
+
+    /**
+     * Render CPU time of the mesh ball against its triangle count on a log axis, where growth like
+     * log n is a straight line.
+     */
+    private static void meshRender(List<String[]> rows, Path file) throws IOException {
+        XYChart chart = new XYChartBuilder().width(800).height(450)
+                .title("Mesh ball, 1280x720, one render thread: CPU time against triangles")
+                .xAxisTitle("triangles (log scale)").yAxisTitle("CPU seconds").build();
+        chart.getStyler().setXAxisLogarithmic(true);
+        chart.getStyler().setLegendPosition(Styler.LegendPosition.InsideNW);
+        chart.getStyler().setChartBackgroundColor(Color.WHITE);
+        chart.getStyler().setXAxisDecimalPattern("#,###");
+        chart.getStyler().setYAxisMin(0.0);
+        series(chart, "render (median of the renders in a warm JVM)", column(rows, 0), column(rows, 3), CRT);
         save(chart, file);
     }
 

@@ -109,47 +109,146 @@ public final class Quartic {
 
     // ---- isolating intervals -------------------------------------------------------------------
 
-    /**
-     * The quartic is monotone between consecutive roots of its derivative 4x³ + 2c2·x + c1, which
-     * is monotone between the roots ±√(−c2/6) of its own derivative: so each level's roots are
-     * isolated by the next level's, and each is refined inside a bracket where the function changes
-     * sign. A pair of roots however close keeps a critical point between them, so neither is lost.
-     */
+    /** {@link #isolate(double, double, double, double, double, double, double, int, double[])} over all of [−bound, bound]. */
     public static int isolate(double c2, double c1, double c0, double bound, double[] out) {
-        // The critical points of the quartic (the cubic's roots) in out[4…], piece by monotone piece
-        // of the cubic: [−bound, −i], [−i, i], [i, bound] with i = √(−c2/6), or all of it.
-        double lo = -bound;
-        int crit = 0;
-        double inflection = c2 < 0 ? Math.sqrt(-c2 / 6) : bound;
-        double a = lo, fa = cubic(c2, c1, a);
-        for (int piece = 0; piece < 3; piece++) {
-            double b = Math.min(bound, piece == 0 ? -inflection : piece == 1 ? inflection : bound);
-            if (!(b > a)) continue;
-            double fb = cubic(c2, c1, b);
-            double x = Double.NaN;
-            if (fa == 0) x = a;
-            else if (fb != 0 && (fa < 0) != (fb < 0)) x = refineCubic(c2, c1, a, b, fa);
-            if (x == x && (crit == 0 || out[3 + crit] != x)) out[4 + crit++] = x;
-            a = b;
-            fa = fb;
-        }
-        if (fa == 0 && (crit == 0 || out[3 + crit] != a)) out[4 + crit++] = a;
-        // Roots of the quartic between consecutive critical points.
+        return isolate(c2, c1, c0, -bound, bound, Double.NEGATIVE_INFINITY, Double.POSITIVE_INFINITY, 4, out);
+    }
+
+    /**
+     * The roots in [lo, hi] that lie in (from, to), in increasing order, at most {@code max} of
+     * them, into {@code out[0…]}; returns their count. The inflection points ±√(−c2/6) cut
+     * [lo, hi] into at most three pieces where the quartic is convex or concave, so a piece holds
+     * at most two roots: one when its ends differ in sign; none when the ends lie on the side its
+     * curvature bends away from; otherwise its extremum (a root of the derivative
+     * 4x³ + 2c2·x + c1, monotone on the piece) decides, sought only until a point of the other
+     * sign splits the piece into two stretches of one root each, or a tangent shows the extremum
+     * keeps the ends' sign. A pair of roots however close keeps the extremum between them, so
+     * neither is lost. The brackets depend on [lo, hi] alone, never on (from, to): a root is the
+     * same double whichever window asks for it; pieces wholly before {@code from} are not refined
+     * and the walk stops at the first root past {@code to} or after {@code max} roots.
+     */
+    public static int isolate(double c2, double c1, double c0, double lo, double hi, double from, double to, int max,
+            double[] out) {
+        return walk(c2, c1, c0, lo, hi, from, to, max, false, out);
+    }
+
+    /**
+     * Whether the quartic has a root in [lo, hi] that lies in (from, to), as {@link #isolate}
+     * finds them: a bracket wholly inside the window answers without being refined.
+     */
+    public static boolean crosses(double c2, double c1, double c0, double lo, double hi, double from, double to,
+            double[] scratch) {
+        return walk(c2, c1, c0, lo, hi, from, to, 1, true, scratch) > 0;
+    }
+
+    /** {@link #isolate}; with {@code decide}, a sign change wholly inside (from, to) is written as NaN unrefined. */
+    private static int walk(double c2, double c1, double c0, double lo, double hi, double from, double to, int max,
+            boolean decide, double[] out) {
+        if (!(lo <= hi) || max <= 0) return 0;
         int n = 0;
-        double x0 = lo, f0 = quartic(c2, c1, c0, x0);
-        for (int i = 0; i <= crit; i++) {
-            double x1 = i < crit ? out[4 + i] : bound;
-            if (x1 <= x0 && i < crit) continue;
-            double f1 = quartic(c2, c1, c0, x1);
-            if (f1 == 0) {
-                if (n == 0 || out[n - 1] != x1) out[n++] = x1;
-            } else if (f0 != 0 && (f0 < 0) != (f1 < 0)) {
-                out[n++] = refineQuartic(c2, c1, c0, x0, x1, f0);
+        double inflection = c2 < 0 ? Math.sqrt(-c2 / 6) : Double.POSITIVE_INFINITY;
+        double p0 = lo, f0 = quartic(c2, c1, c0, lo);
+        if (f0 == 0 && lo > from && lo < to) {
+            out[n++] = lo;
+            if (n == max) return n;
+        }
+        for (int piece = 0; piece < 3; piece++) {
+            double p1 = Math.min(hi, piece == 0 ? -inflection : piece == 1 ? inflection : hi);
+            if (!(p1 > p0)) continue;
+            if (p0 >= to) return n;
+            double f1 = quartic(c2, c1, c0, p1);
+            if (p1 > from) {
+                boolean convex = c2 >= 0 || piece != 1;
+                if (f0 != 0 && f1 != 0 && (f0 < 0) != (f1 < 0)) {
+                    double x = decide && p0 >= from && p1 <= to ? Double.NaN : refineQuartic(c2, c1, c0, p0, p1, f0, convex);
+                    if (x != x) {
+                        out[n++] = x;
+                        return n;
+                    }
+                    if (x > from && x < to) {
+                        out[n++] = x;
+                        if (n == max) return n;
+                    } else if (x >= to) {
+                        return n;
+                    }
+                } else if (f0 != 0 && f1 != 0 && (convex ? f0 < 0 : f0 > 0)) {
+                    // Both ends on the side the piece bends away from: it never reaches zero.
+                } else {
+                    double g0 = cubic(c2, c1, p0), g1 = cubic(c2, c1, p1);
+                    double x0 = p0, fx0 = f0;
+                    if (g0 != 0 && g1 != 0 && (g0 < 0) != (g1 < 0)) {
+                        // Both ends of one sign: a point of the other sign, or a bound on the
+                        // extremum, answers before the critical point is refined to the last bit.
+                        double c = f0 != 0 && f1 != 0 ? split(c2, c1, c0, p0, p1, g0, f0) : refineCubic(c2, c1, p0, p1, g0);
+                        if (c > p0 && c < p1) {
+                            double fc = quartic(c2, c1, c0, c);
+                            n = stretch(c2, c1, c0, x0, fx0, c, fc, convex, from, to, decide, n, out);
+                            if (n == max || c >= to) return n;
+                            x0 = c;
+                            fx0 = fc;
+                        }
+                    }
+                    n = stretch(c2, c1, c0, x0, fx0, p1, f1, convex, from, to, decide, n, out);
+                    if (n == max) return n;
+                }
             }
-            x0 = x1;
+            p0 = p1;
             f0 = f1;
         }
         return n;
+    }
+
+    /**
+     * The root of a stretch [x0, x1] of the quartic (values f0, f1) that holds at most one, if it
+     * lies in (from, to), appended at out[n]; returns the new count.
+     */
+    private static int stretch(double c2, double c1, double c0, double x0, double f0, double x1, double f1,
+            boolean convex, double from, double to, boolean decide, int n, double[] out) {
+        if (!(x1 > from)) return n;
+        double x;
+        if (f1 == 0) {
+            if (n > 0 && out[n - 1] == x1) return n;
+            x = x1;
+        } else if (f0 != 0 && (f0 < 0) != (f1 < 0)) {
+            if (decide && x0 >= from && x1 <= to) {
+                out[n] = Double.NaN;
+                return n + 1;
+            }
+            x = refineQuartic(c2, c1, c0, x0, x1, f0, convex);
+        } else {
+            return n;
+        }
+        if (x > from && x < to) out[n++] = x;
+        return n;
+    }
+
+    /**
+     * Within a piece [a, b] where the quartic bends one way and is f0 (≠ 0) at both ends, and its
+     * derivative changes sign (ga at a): Newton steps towards the extremum as {@link #refine} takes
+     * them on the derivative, stopping at the first point where the quartic has the other sign
+     * (it splits the piece into two stretches of one root each), or with NaN as soon as the
+     * tangent at a step shows that the extremum keeps f0's sign (the quartic lies beyond its
+     * tangent, and the extremum lies within the bracket); otherwise the extremum itself.
+     */
+    private static double split(double c2, double c1, double c0, double a, double b, double ga, double f0) {
+        double x = 0.5 * (a + b);
+        for (int i = 0; i < 200; i++) {
+            double g = cubic(c2, c1, x);
+            if (g == 0) return x;
+            if ((g < 0) == (ga < 0)) a = x;
+            else b = x;
+            double x2 = x * x;
+            double f = (x2 + c2) * x2 + c1 * x + c0;
+            if (f != 0 && (f < 0) != (f0 < 0)) return x;
+            double reach = Math.abs(g) * (b - a) + 0x1p-40 * (x2 * x2 + Math.abs(c2) * x2 + Math.abs(c1 * x) + Math.abs(c0));
+            if (f0 > 0 ? f > reach : f < -reach) return Double.NaN;
+            double next = x - g / (12 * x2 + 2 * c2);
+            if (Math.abs(next - x) <= 2 * Math.ulp(x)) return x;
+            if (!(next > a && next < b) || Math.abs(next - x) > 0.5 * (b - a)) next = 0.5 * (a + b);
+            if (b - a <= 2 * Math.ulp(Math.max(Math.abs(a), Math.abs(b)))) return next;
+            x = next;
+        }
+        return x;
     }
 
     private static double cubic(double c2, double c1, double x) {
@@ -158,21 +257,25 @@ public final class Quartic {
 
     /** The root of the cubic in [a, b], where it changes sign (fa = its value at a), to full precision. */
     private static double refineCubic(double c2, double c1, double a, double b, double fa) {
-        return refine(c2, c1, 0, a, b, fa, false);
+        return refine(c2, c1, 0, a, b, fa, false, 0.5 * (a + b));
     }
 
-    /** The root of the quartic in [a, b], where it changes sign (fa = its value at a), to full precision. */
-    private static double refineQuartic(double c2, double c1, double c0, double a, double b, double fa) {
-        return refine(c2, c1, c0, a, b, fa, true);
+    /**
+     * The root of the quartic in [a, b], where it changes sign (fa = its value at a) and bends
+     * one way ({@code convex}: upwards), to full precision. Newton starts from the end where the
+     * quartic has the sign of its curvature: from there it never overshoots the root.
+     */
+    private static double refineQuartic(double c2, double c1, double c0, double a, double b, double fa, boolean convex) {
+        return refine(c2, c1, c0, a, b, fa, true, (fa > 0) == convex ? a : b);
     }
 
     /**
      * Safeguarded Newton on the depressed quartic ({@code quartic}) or on its derivative, the cubic
      * 4x³ + 2c2·x + c1: Newton steps while they stay inside the shrinking sign-change bracket
-     * [a, b] and halve it at least, bisection otherwise.
+     * [a, b] and halve it at least, bisection otherwise; from x.
      */
-    private static double refine(double c2, double c1, double c0, double a, double b, double fa, boolean quartic) {
-        double x = 0.5 * (a + b);
+    private static double refine(double c2, double c1, double c0, double a, double b, double fa, boolean quartic,
+            double x) {
         for (int i = 0; i < 200; i++) {
             double f = quartic ? quartic(c2, c1, c0, x) : cubic(c2, c1, x);
             if (f == 0) return x;

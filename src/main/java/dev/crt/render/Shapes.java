@@ -220,9 +220,15 @@ final class Shapes {
         switch (kind[s]) {
             case MESH:
                 return MeshShape.firstHit(a, o, ray, tMax, scratch, meshes[(int) a[o + Affine.SIZE]], s, hit);
-            case TORUS:
-                if (!TorusShape.mayHit(a, o, ray, 0, tMax)) return false;
-                break;
+            case TORUS: {
+                double t = TorusShape.firstHit(a, o, ray, tMax, scratch.roots);
+                if (t != t) return false;
+                hit.t = t;
+                hit.shape = s;
+                hit.face = 0;
+                hit.flip = false;
+                return true;
+            }
             case SPHERE, BOX, PLANE, MAPPED_SPHERE, MAPPED_BOX, CONE, EMPTY:
                 break;
             default:
@@ -267,8 +273,7 @@ final class Shapes {
             case MESH:
                 return MeshShape.anyHit(a, o, ray, tMax, scratch, meshes[(int) a[o + Affine.SIZE]]);
             case TORUS:
-                if (!TorusShape.mayHit(a, o, ray, 0, tMax)) return false;
-                break;
+                return TorusShape.anyHit(a, o, ray, tMax, scratch.roots);
             case SPHERE, BOX, PLANE, MAPPED_SPHERE, MAPPED_BOX, CONE, EMPTY:
                 break;
             default:

@@ -10,18 +10,21 @@ import dev.crt.scene.Torus;
  * The torus, intersected in a local frame where it lies about the origin with its axis along z
  * (scene units). A line is first moved to its closest approach to the centre and its direction
  * made unit: the quartic in the distance s from there is then depressed (no cubic term) and its
- * coefficients are of the torus's size however far away the ray starts; a line that passes
- * farther than R + r from the centre is dismissed before any quartic. The roots come from
- * {@link Quartic#isolate} (the measurements of docs/benchmarks.md chose it), and the intervals
- * inside the solid are read from the inside test at the midpoints between roots, so a spindle
- * torus's inner sheet (the quartic's other branch) and a doubled tangent root cannot swap inside
- * for outside.
+ * coefficients are of the torus's size however far away the ray starts. Its roots are sought only
+ * where the line is inside the slab, cylinder and sphere around the torus at once (a line that
+ * misses that stretch costs no quartic), by {@link Quartic#isolate} (the measurements of
+ * docs/benchmarks.md chose it). CSG's {@link #span} reads the intervals inside the solid from the
+ * inside test at the midpoints between all roots, so a spindle torus's inner sheet and a doubled
+ * tangent root cannot swap inside for outside; a closest hit or a shadow ray ({@link #firstHit})
+ * refines only the first root in its window that lies on the solid's boundary.
  *
  * <p>Data after the {@link Affine} placement: R (major), r (minor).
  */
 final class TorusShape {
     /** The quartic method tori use (docs/benchmarks.md, "Torus roots"). */
     static final int METHOD = Quartic.ISOLATE;
+    /** What {@link #roots} is asked for: every root, the first that bounds the solid, or whether there is one. */
+    static final int ALL = 0, FIRST = 1, ANY = 2;
 
     private TorusShape() {}
 
@@ -35,13 +38,33 @@ final class TorusShape {
         out.kind[s] = Shapes.TORUS;
         out.pushMatrices(Transform.frame(axes[0], axes[1], axes[2], t.center()).then(toWorld));
         out.push(t.major(), t.minor());
-        Aabb b = out.bounds(s);
+        // The scale for ray offsets is that of the local box's corners, as it always was.
+        int o = out.offset[s];
+        double e = t.major() + t.minor();
+        Aabb b = Affine.bounds(out.data, o, -e, -e, -t.minor(), e, e, t.minor());
         out.scale[s] = Math.max(Shapes.maxAbs(b.min()), Shapes.maxAbs(b.max()));
     }
 
+    /**
+     * The torus's own box: the placed torus is the ring circle's image (an ellipse) swept by the
+     * tube's (an ellipsoid), so along world axis i it reaches R·|(A_i0, A_i1)| + r·|A_i| from its
+     * centre, A the placement's linear part. A turned torus's box is then far smaller than the box
+     * of its local box's corners (a third narrower per axis for an axis along (1, 1, 1)), so fewer
+     * rays reach the quartic and the BVH over many tori is tighter. Widened by 2⁻³⁰ for rounding.
+     */
     static Aabb bounds(double[] a, int o) {
-        double big = a[o + Affine.SIZE], small = a[o + Affine.SIZE + 1], e = big + small;
-        return Affine.bounds(a, o, -e, -e, -small, e, e, small);
+        double big = a[o + Affine.SIZE], small = a[o + Affine.SIZE + 1];
+        int m = o + 12;
+        double[] lo = new double[3], hi = new double[3];
+        for (int i = 0; i < 3; i++) {
+            double ax = a[m + 4 * i], ay = a[m + 4 * i + 1], az = a[m + 4 * i + 2];
+            double ring = Math.sqrt(ax * ax + ay * ay);
+            double half = (big * ring + small * Math.sqrt(ring * ring + az * az)) * (1 + 0x1p-30);
+            double c = a[m + 4 * i + 3];
+            lo[i] = c - half;
+            hi[i] = c + half;
+        }
+        return new Aabb(new Vec3(lo[0], lo[1], lo[2]), new Vec3(hi[0], hi[1], hi[2]));
     }
 
     static boolean span(double[] a, int o, Ray ray, LineSpan out, double[] roots) {
@@ -54,11 +77,8 @@ final class TorusShape {
         dz /= length;
         double s0 = -(ray.lox * dx + ray.loy * dy + ray.loz * dz);
         double ox = ray.lox + s0 * dx, oy = ray.loy + s0 * dy, oz = ray.loz + s0 * dz;
-        double g = ox * ox + oy * oy + oz * oz;
-        double reach = big + small;
-        if (g > reach * reach) return false;
-        if (!mayCross(ox, oy, oz, dx, dy, dz, reach, small)) return false;
-        int n = roots(METHOD, ox, oy, oz, dx, dy, dz, big, small, roots);
+        int n = roots(METHOD, ox, oy, oz, dx, dy, dz, big, small, Double.NEGATIVE_INFINITY, Double.POSITIVE_INFINITY,
+                ALL, roots);
         if (n == 0) return false;
         out.count = 0;
         out.surface = false;
@@ -79,27 +99,73 @@ final class TorusShape {
     }
 
     /**
-     * Whether the ray can meet the torus with tMin &lt; t &lt; tMax: false when the part of its line
-     * within the slab |z| ≤ r and the cylinder ρ ≤ R + r (widened as in {@link #mayCross}, and by
-     * 2⁻²⁰ of R + r more) lies wholly outside that range. Every root {@link #span} would find lies
-     * in that part, so a closest hit or shadow ray that cannot reach it skips the quartic.
+     * The nearest crossing of the torus's surface with 0 &lt; t &lt; tMax, or NaN: the first root of
+     * the quartic in that window that bounds the solid, without refining the roots behind it or
+     * beyond it. It is the same double as the first crossing {@link #span} gives (both refine the
+     * same brackets), so a torus looks the same alone and in CSG.
      */
-    static boolean mayHit(double[] a, int o, Ray ray, double tMin, double tMax) {
+    static double firstHit(double[] a, int o, Ray ray, double tMax, double[] roots) {
+        return crossing(a, o, ray, tMax, FIRST, roots) ? roots[0] : Double.NaN;
+    }
+
+    /**
+     * Whether the surface crosses the ray with 0 &lt; t &lt; tMax, as {@link #firstHit} would find:
+     * the question of a shadow ray, where a sign change of the quartic inside the window answers
+     * without refining its root (on a ring torus every root bounds the solid).
+     */
+    static boolean anyHit(double[] a, int o, Ray ray, double tMax, double[] roots) {
+        return crossing(a, o, ray, tMax, ANY, roots);
+    }
+
+    /** Whether there is a crossing with 0 &lt; t &lt; tMax; its t into roots[0] when refined (NaN when not). */
+    private static boolean crossing(double[] a, int o, Ray ray, double tMax, int want, double[] roots) {
         ray.toLocal(a, o);
         double big = a[o + Affine.SIZE], small = a[o + Affine.SIZE + 1];
         double dx = ray.ldx, dy = ray.ldy, dz = ray.ldz;
-        double length = Math.sqrt(dx * dx + dy * dy + dz * dz);
+        // Most rays that reach the torus's box pass outside its sphere: |o × d|² / |d|² is the
+        // squared distance of the line from the centre, tested before any square root or division
+        // (with room for its rounding; the exact test follows).
+        double cx = ray.loy * dz - ray.loz * dy, cy = ray.loz * dx - ray.lox * dz, cz = ray.lox * dy - ray.loy * dx;
+        double dd = dx * dx + dy * dy + dz * dz, reach = big + small;
+        if (cx * cx + cy * cy + cz * cz > reach * reach * dd * (1 + 0x1p-20)
+                + 0x1p-40 * (ray.lox * ray.lox + ray.loy * ray.loy + ray.loz * ray.loz) * dd) {
+            return false;
+        }
+        double length = Math.sqrt(dd);
         dx /= length;
         dy /= length;
         dz /= length;
         double s0 = -(ray.lox * dx + ray.loy * dy + ray.loz * dz);
         double ox = ray.lox + s0 * dx, oy = ray.loy + s0 * dy, oz = ray.loz + s0 * dz;
+        if (roots(METHOD, ox, oy, oz, dx, dy, dz, big, small, -s0, tMax * length - s0, want, roots) == 0) return false;
+        if (roots[0] != roots[0]) return true;
+        double t = (roots[0] + s0) / length;
+        roots[0] = t;
+        return t > 0 && t < tMax;
+    }
+
+    /**
+     * The roots s of the torus quartic along the line o + s·d (|d| = 1, o the closest approach to
+     * the centre, so o·d = 0) that lie in (from, to), in increasing order, into {@code out}: with
+     * g = |o|² and k = g + R² − r²,
+     * s⁴ + (2k − 4R²(dx² + dy²))s² − 8R²(ox·dx + oy·dy)s + k² − 4R²(ox² + oy²) = 0.
+     * Every root lies where the line is within the slab |z| ≤ r, the cylinder ρ ≤ R + r and the
+     * sphere |p| ≤ R + r at once: a line that misses that stretch (widened by 2⁻²⁰ of R + r, so
+     * that a grazing root stays inside) has no root, and {@link Quartic#ISOLATE} searches that
+     * stretch only (the other methods, compared in docs/benchmarks.md, all of [−(R + r), R + r]).
+     * With {@link #FIRST}, only the first root that bounds the solid is written: a spindle
+     * torus's inner sheet, the quartic's points with |p|² &lt; r² − R², lies inside the solid
+     * and is passed over; with {@link #ANY}, a NaN in its place means there is one, unrefined.
+     */
+    static int roots(int method, double ox, double oy, double oz, double dx, double dy, double dz, double big,
+            double small, double from, double to, int want, double[] out) {
+        double g = ox * ox + oy * oy + oz * oz;
         double reach = big + small;
-        if (ox * ox + oy * oy + oz * oz > reach * reach) return false;
+        if (g > reach * reach) return 0;
         double slack = 0x1p-30 * reach;
         double lo = Double.NEGATIVE_INFINITY, hi = Double.POSITIVE_INFINITY;
         if (dz == 0) {
-            if (Math.abs(oz) > small + slack) return false;
+            if (Math.abs(oz) > small + slack) return 0;
         } else {
             double p = (-small - slack - oz) / dz, q = (small + slack - oz) / dz;
             lo = Math.min(p, q);
@@ -110,67 +176,41 @@ final class TorusShape {
         double wide = reach + slack;
         double qc = ox * ox + oy * oy - wide * wide;
         if (qa == 0) {
-            if (qc > 0) return false;
+            if (qc > 0) return 0;
         } else {
             double disc = qb * qb - qa * qc;
-            if (disc < 0) return false;
+            if (disc < 0) return 0;
             double root = Math.sqrt(disc);
             lo = Math.max(lo, (-qb - root) / qa);
             hi = Math.min(hi, (-qb + root) / qa);
         }
-        // Also within the sphere of radius R + r, where the quartic's roots are sought.
-        double half = Math.sqrt(Math.max(0, reach * reach - (ox * ox + oy * oy + oz * oz)));
-        lo = Math.max(lo, -half);
-        hi = Math.min(hi, half);
+        double half = Math.sqrt(Math.max(0, reach * reach - g));
         double margin = 0x1p-20 * reach;
-        lo -= margin;
-        hi += margin;
-        if (!(lo <= hi)) return false;
-        return (hi + s0) / length > tMin && (lo + s0) / length < tMax;
-    }
-
-    /**
-     * Whether the line can meet the torus at all: it must be within the slab |z| ≤ r and within
-     * the cylinder ρ ≤ R + r at once. Most lines that reach a torus's box but miss the torus fail
-     * here, before any quartic; the test is widened by a hair so it never drops a grazing hit.
-     */
-    private static boolean mayCross(double ox, double oy, double oz, double dx, double dy, double dz, double reach,
-            double small) {
-        double slack = 0x1p-30 * reach;
-        double lo = Double.NEGATIVE_INFINITY, hi = Double.POSITIVE_INFINITY;
-        if (dz == 0) {
-            if (Math.abs(oz) > small + slack) return false;
-        } else {
-            double a = (-small - slack - oz) / dz, b = (small + slack - oz) / dz;
-            lo = Math.min(a, b);
-            hi = Math.max(a, b);
-        }
-        double qa = dx * dx + dy * dy;
-        double qb = ox * dx + oy * dy;
-        double wide = reach + slack;
-        double qc = ox * ox + oy * oy - wide * wide;
-        if (qa == 0) return qc <= 0 && lo <= hi;
-        double disc = qb * qb - qa * qc;
-        if (disc < 0) return false;
-        double root = Math.sqrt(disc);
-        return Math.max(lo, (-qb - root) / qa) <= Math.min(hi, (-qb + root) / qa);
-    }
-
-    /**
-     * The roots s of the torus quartic along the line o + s·d (|d| = 1, o the closest approach to
-     * the centre, so o·d = 0): with g = |o|² and k = g + R² − r²,
-     * s⁴ + (2k − 4R²(dx² + dy²))s² − 8R²(ox·dx + oy·dy)s + k² − 4R²(ox² + oy²) = 0.
-     */
-    static int roots(int method, double ox, double oy, double oz, double dx, double dy, double dz, double big,
-            double small, double[] out) {
-        double g = ox * ox + oy * oy + oz * oz;
+        lo = Math.max(lo, -half) - margin;
+        hi = Math.min(hi, half) + margin;
+        if (!(lo <= hi) || !(from < hi) || !(to > lo)) return 0;
         double k = g + (big - small) * (big + small);
         double r2 = 4 * big * big;
-        double c2 = 2 * k - r2 * (dx * dx + dy * dy);
-        double c1 = -2 * r2 * (ox * dx + oy * dy);
+        double c2 = 2 * k - r2 * qa;
+        double c1 = -2 * r2 * qb;
         double c0 = k * k - r2 * (ox * ox + oy * oy);
-        double bound = (big + small) * (1 + 0x1p-40);
-        return Quartic.solve(method, c2, c1, c0, bound, out);
+        if (method != Quartic.ISOLATE) {
+            int n = Quartic.solve(method, c2, c1, c0, reach * (1 + 0x1p-40), out);
+            int kept = 0;
+            for (int i = 0; i < n; i++) {
+                if (out[i] > from && out[i] < to && !(want != ALL && out[i] * out[i] < -k)) out[kept++] = out[i];
+            }
+            return want != ALL ? Math.min(kept, 1) : kept;
+        }
+        if (want == ALL) return Quartic.isolate(c2, c1, c0, lo, hi, from, to, 4, out);
+        // A line with k > 0 (every line, on a ring torus) misses the inner sheet: any root will do.
+        if (want == ANY && k > 0) return Quartic.crosses(c2, c1, c0, lo, hi, from, to, out) ? 1 : 0;
+        // |p|² = g + s² on this line, and r² − R² − g = −k: the inner sheet is where s² < −k.
+        while (Quartic.isolate(c2, c1, c0, lo, hi, from, to, 1, out) == 1) {
+            if (!(out[0] * out[0] < -k)) return 1;
+            from = out[0];
+        }
+        return 0;
     }
 
     private static boolean inside(double x, double y, double z, double big, double small) {

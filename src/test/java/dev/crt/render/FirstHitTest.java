@@ -18,7 +18,7 @@ import org.junit.jupiter.api.Test;
 
 /**
  * The first-hit and any-hit paths of shapes standing alone (meshes stop their walk at the nearest
- * triangle, tori skip the quartic when the ray cannot reach the torus) against the crossings of the
+ * triangle, tori refine only the first root in the ray's window) against the crossings of the
  * whole line that CSG uses: the same nearest crossing, bit for bit, and a shadow hit exactly when
  * some crossing lies in the segment. Rays come from around the shape, from far away, from points
  * just off its surface (as shadow and reflected rays do), grazing it, with and without a far end.

@@ -291,9 +291,10 @@ class StabilitySuite {
      * Rays tangent to a torus at a random point of its surface, the line moved 1e-9 to 1e-5 of r
      * along the normal (three times in four inwards, where the two roots are apart by more than the
      * tolerance): the first entry against the 60-digit roots of {@link TorusRootsBench}, through
-     * the whole shape path (Shapes.span). A ray fails when it misses a root pair that is farther
-     * apart than the tolerance (1e-7 of R + r), or enters where there is no root. Naive: the closed
-     * form (Ferrari) on the same quartic.
+     * the whole shape path (Shapes.span, and Shapes.firstHit and anyHit, which refine the first
+     * root only). A ray fails when it misses a root pair that is farther apart than the tolerance
+     * (1e-7 of R + r), or enters where there is no root. Naive: the closed form (Ferrari) on the
+     * same quartic.
      */
     @Test
     void raysTangentToATorus() {
@@ -302,6 +303,7 @@ class StabilitySuite {
         Shapes shapes = new Shapes();
         Ray ray = new Ray();
         LineSpan span = new LineSpan();
+        Hit nearest = new Hit();
         double[] roots = new double[8];
         for (TorusRootsBench.Case c : cases) {
             double[] ref = TorusRootsBench.reference(c);
@@ -312,7 +314,14 @@ class StabilitySuite {
                     Transform.IDENTITY, 0);
             ray.set(c.ox(), c.oy(), c.oz(), c.dx(), c.dy(), c.dz());
             boolean hit = shapes.span(s, ray, span);
-            if (torusFailed(hit, hit ? span.tIn[0] : Double.NaN, ref, mustHit, tol)) crt++;
+            boolean failed = torusFailed(hit, hit ? span.tIn[0] : Double.NaN, ref, mustHit, tol);
+            // The closest-hit and shadow paths, which refine only the first root, must agree.
+            ray.set(c.ox(), c.oy(), c.oz(), c.dx(), c.dy(), c.dz());
+            boolean first = shapes.firstHit(s, ray, Double.POSITIVE_INFINITY, span, nearest);
+            failed |= torusFailed(first, first ? nearest.t : Double.NaN, ref, mustHit, tol);
+            ray.set(c.ox(), c.oy(), c.oz(), c.dx(), c.dy(), c.dz());
+            failed |= shapes.anyHit(s, ray, Double.POSITIVE_INFINITY, span) != first;
+            if (failed) crt++;
             int k = TorusRootsBench.solve(Quartic.FERRARI, c, roots);
             if (torusFailed(k > 0, k > 0 ? roots[0] : Double.NaN, ref, mustHit, tol)) naive++;
         }

@@ -18,13 +18,21 @@ import java.util.SplittableRandom;
  * derivatives and bisected down to adjacent doubles. A method fails on a ray when it misses a
  * reference root (one not within the tolerance of another, i.e. not half of a tangent pair too
  * close to matter) or returns a root with no reference root within the tolerance, 1e-7 of the
- * torus's size. Cost: nanoseconds per ray of the production path (move to the closest approach,
- * form the quartic, solve), the best of nine passes over the same rays, the methods taking turns.
+ * torus's size. A last row measures the closest-hit path tori ship (only the first root with
+ * t &gt; 0 that bounds the solid is refined): it fails when that root is missed or another is
+ * given. Cost: nanoseconds per ray of the production path (move to the closest approach, bound
+ * the stretch of the line near the torus, form the quartic, solve), the best of nine passes over
+ * the same rays, the methods taking turns.
  *
  * <pre>mvn -B -q -o test-compile && java -cp target/classes:target/test-classes dev.crt.render.TorusRootsBench [rays per family] [csv]</pre>
  */
 public final class TorusRootsBench {
     private static final MathContext MC = new MathContext(60);
+    /** The rows of the study: the three methods on every root, then the closest-hit path tori ship. */
+    private static final String[] NAMES = {Quartic.NAMES[0], Quartic.NAMES[1], Quartic.NAMES[2],
+        "first root only (closest hit: isolating intervals)"};
+    /** The index in {@link #NAMES} of the closest-hit path. */
+    private static final int FIRST = 3;
     private static final String[] FAMILIES = {"random", "grazing (1e-9 to 1e-5 of r)", "along the axis", "far away (1e4 radii)", "spindle"};
 
     /** A ray in the torus's own frame (centre at the origin, axis z) and the torus. */
@@ -40,25 +48,30 @@ public final class TorusRootsBench {
             List<double[]> reference = new ArrayList<>();
             for (Case c : cases) reference.add(reference(c));
             double[] ns = costs(cases);
-            for (int m = 0; m < Quartic.NAMES.length; m++) {
+            for (int m = 0; m < NAMES.length; m++) {
                 int failed = 0, missed = 0, spurious = 0;
                 double[] out = new double[8];
                 for (int i = 0; i < cases.size(); i++) {
                     Case c = cases.get(i);
-                    int k = solve(m, c, out);
                     double tol = 1e-7 * (c.big + c.small);
                     double[] ref = reference.get(i);
                     int miss = 0, extra = 0;
-                    for (int a = 0; a < ref.length; a++) {
-                        boolean tangentHalf = (a > 0 && ref[a] - ref[a - 1] <= tol) || (a + 1 < ref.length && ref[a + 1] - ref[a] <= tol);
-                        if (!near(ref[a], out, k, tol) && !tangentHalf) miss++;
+                    if (m == FIRST) {
+                        int verdict = firstFailure(c, ref, solve(m, c, out) > 0 ? out[0] : Double.NaN, tol);
+                        miss = verdict == 1 ? 1 : 0;
+                        extra = verdict == 2 ? 1 : 0;
+                    } else {
+                        int k = solve(m, c, out);
+                        for (int a = 0; a < ref.length; a++) {
+                            if (!near(ref[a], out, k, tol) && !tangentHalf(ref, a, tol)) miss++;
+                        }
+                        for (int b = 0; b < k; b++) if (!near(out[b], ref, ref.length, tol)) extra++;
                     }
-                    for (int b = 0; b < k; b++) if (!near(out[b], ref, ref.length, tol)) extra++;
                     if (miss + extra > 0) failed++;
                     missed += miss;
                     spurious += extra;
                 }
-                String line = String.format(Locale.ROOT, "%s,%s,%d,%d,%d,%d,%.3e,%.1f", Quartic.NAMES[m], FAMILIES[f],
+                String line = String.format(Locale.ROOT, "%s,%s,%d,%d,%d,%d,%.3e,%.1f", NAMES[m], FAMILIES[f],
                         cases.size(), failed, missed, spurious, failed / (double) cases.size(), ns[m]);
                 System.out.println(line);
                 lines.add(line);
@@ -75,15 +88,42 @@ public final class TorusRootsBench {
         return false;
     }
 
-    /** The production path: roots in t of the ray as TorusShape.span finds them (both sheets of the quartic). */
+    /** Whether reference root a is half of a tangent pair closer than the tolerance, which no picture can show. */
+    private static boolean tangentHalf(double[] ref, int a, double tol) {
+        return (a > 0 && ref[a] - ref[a - 1] <= tol) || (a + 1 < ref.length && ref[a + 1] - ref[a] <= tol);
+    }
+
+    /**
+     * How the closest-hit path did on a ray, against the reference roots with t &gt; 0 that bound the
+     * solid (off a spindle torus's inner sheet): 0 right, 1 a missed first crossing, 2 a crossing
+     * where there is none or beyond the first. Skipping a tangent pair closer than the tolerance
+     * is right, as in the all-roots rows.
+     */
+    static int firstFailure(Case c, double[] ref, double found, double tol) {
+        double inner = (c.small - c.big) * (c.small + c.big);
+        for (int a = 0; a < ref.length; a++) {
+            double t = ref[a];
+            double px = c.ox + t * c.dx, py = c.oy + t * c.dy, pz = c.oz + t * c.dz;
+            if (t <= 0 || px * px + py * py + pz * pz < inner) continue;
+            if (found == found && Math.abs(found - t) <= tol) return 0;
+            if (!tangentHalf(ref, a, tol)) return found == found && found < t ? 2 : 1;
+        }
+        return found == found ? 2 : 0;
+    }
+
+    /**
+     * The production path: the roots in t of the ray as TorusShape.span finds them (both sheets of
+     * the quartic), or for {@link #FIRST} the one root TorusShape.firstHit refines (t &gt; 0).
+     */
     static int solve(int method, Case c, double[] out) {
         double length = Math.sqrt(c.dx * c.dx + c.dy * c.dy + c.dz * c.dz);
         double dx = c.dx / length, dy = c.dy / length, dz = c.dz / length;
         double s0 = -(c.ox * dx + c.oy * dy + c.oz * dz);
         double ox = c.ox + s0 * dx, oy = c.oy + s0 * dy, oz = c.oz + s0 * dz;
-        double reach = c.big + c.small;
-        if (ox * ox + oy * oy + oz * oz > reach * reach) return 0;
-        int k = TorusShape.roots(method, ox, oy, oz, dx, dy, dz, c.big, c.small, out);
+        boolean first = method == FIRST;
+        int k = TorusShape.roots(first ? Quartic.ISOLATE : method, ox, oy, oz, dx, dy, dz, c.big, c.small,
+                first ? -s0 : Double.NEGATIVE_INFINITY, Double.POSITIVE_INFINITY, first ? TorusShape.FIRST : TorusShape.ALL,
+                out);
         for (int i = 0; i < k; i++) out[i] = (out[i] + s0) / length;
         return k;
     }
@@ -94,7 +134,7 @@ public final class TorusRootsBench {
      * does not land on one method only.
      */
     private static double[] costs(List<Case> cases) {
-        int methods = Quartic.NAMES.length;
+        int methods = NAMES.length;
         double[] best = new double[methods];
         java.util.Arrays.fill(best, Double.POSITIVE_INFINITY);
         double[] out = new double[8];
