@@ -28,7 +28,7 @@ class BvhBuilderTest {
     private static void check(int n) {
         double[] boxes = randomBoxes(n, n);
         int[] order = new int[n];
-        Bvh bvh = BvhBuilder.build(boxes, n, order);
+        Bvh bvh = BvhBuilder.build(boxes.clone(), n, order);
         int[] seen = new int[n];
         int leaves = walk(bvh, 0, boxes, order, seen, bvh.root);
         for (int i = 0; i < n; i++) assertThat(seen[i]).as("item %d", i).isEqualTo(1);
