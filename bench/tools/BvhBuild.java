@@ -78,8 +78,8 @@ public final class BvhBuild {
     private static void scene(Path script, double time) throws Exception {
         long base = heap();
         long c0 = OS.getProcessCpuTime(), w0 = System.nanoTime();
-        var result = CrtCompiler.compile(Source.of(script.toString(), Files.readString(script)),
-                new CompileOptions(time, List.of(script.toAbsolutePath().getParent()), 1_000_000_000L, Duration.ofSeconds(600)));
+        var result = CrtCompiler.compile(new Source(script.toString(), Files.readString(script), script),
+                new CompileOptions(time, List.of(), 1_000_000_000L, Duration.ofSeconds(600)));
         double compileWall = (System.nanoTime() - w0) / 1e9, compileCpu = (OS.getProcessCpuTime() - c0) / 1e9;
         Scene scene = result.scene();
         if (scene == null) throw new IllegalStateException(result.diagnostics().get(0).message());
