@@ -7,11 +7,12 @@
 # For each size: BvhBuilder.build alone over random spheres (bench/scenes/spheres.crt's
 # distribution) and over the triangles of a bumpy ball (bench/tools/MeshGen.java's), N rounds in
 # one JVM of --heap (default 2g): wall and process CPU seconds (medians), the tree's node count
-# and SAH cost, and the heap per item the tree holds and the most the build used beyond it.
+# and SAH cost, and the heap per item the tree holds and at most used while building (beyond
+# the boxes given to it; the sum of the heap pools' peaks).
 # With --scenes, also whole runs as the command line does them, each in a fresh JVM: compile
 # bench/scenes/spheres.crt at 1e6 spheres and prepare its geometry (heap held per sphere after
 # both), and load a generated 10-million-triangle ball (binary PLY, kept in --work, default
-# bench/results/meshes) and build its BVH, in --heap.
+# ${TMPDIR:-/tmp}/crt-bvh-build) and build its BVH, in --heap.
 # Needs target/crt.jar (mvn -B -q -o package -DskipTests). Numbers move with the machine's load:
 # the load average is printed before and after.
 set -euo pipefail
@@ -22,7 +23,7 @@ sizes="100000 1000000 10000000"
 rounds=3
 heap=2g
 scenes=0
-work="$here/results/meshes"
+work="${TMPDIR:-/tmp}/crt-bvh-build"
 
 usage() { sed -n '2,17p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'; }
 while [ $# -gt 0 ]; do

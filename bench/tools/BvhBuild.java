@@ -70,7 +70,7 @@ public final class BvhBuild {
             System.out.printf("  %s %,d round %d: wall %.3f s, cpu %.3f s%n", kind, items, r + 1, wall[r], cpu[r]);
         }
         System.out.printf("%s %,d: build wall %.3f s, cpu %.3f s (medians of %d; first %.3f / %.3f); nodes %,d, depth %d,"
-                        + " SAH cost %.2f; heap per item: tree %.1f bytes, at most %.1f more while building%n",
+                        + " SAH cost %.2f; heap per item: tree %.1f bytes, peak while building (tree included) at most %.1f%n",
                 kind, items, median(wall), median(cpu), rounds, wall[0], cpu[0], bvh.nodeCount, bvh.depth, sah(bvh),
                 (double) held / items, (double) peak / items);
     }
@@ -91,9 +91,9 @@ public final class BvhBuild {
         long items = geometry.items.length;
         for (MeshGeometry m : geometry.shapes.meshes) if (m != null) items = Math.max(items, m.count);
         System.out.printf("%s (time %s): compile wall %.2f s cpu %.2f s; geometry (BVH builds included) wall %.2f s cpu %.2f s;"
-                        + " heap held %.1f MB, %.1f bytes per item (%,d items); peak committed heap %.0f MB%n",
+                        + " heap held %.1f MB, %.1f bytes per item (%,d items)%n",
                 script.getFileName(), time, compileWall, compileCpu, geometryWall, geometryCpu, held / 1e6,
-                (double) held / items, items, peakCommitted() / 1e6);
+                (double) held / items, items);
         // The scene is read after the measure, so that it is held (not collected) while measured.
         System.out.printf("  %,d entities%n", scene.entities().size());
     }
@@ -192,14 +192,6 @@ public final class BvhBuild {
         long sum = 0;
         for (var pool : ManagementFactory.getMemoryPoolMXBeans()) {
             if (pool.getType() == java.lang.management.MemoryType.HEAP) sum += pool.getPeakUsage().getUsed();
-        }
-        return sum;
-    }
-
-    private static long peakCommitted() {
-        long sum = 0;
-        for (var pool : ManagementFactory.getMemoryPoolMXBeans()) {
-            if (pool.getType() == java.lang.management.MemoryType.HEAP) sum += pool.getPeakUsage().getCommitted();
         }
         return sum;
     }
