@@ -11,9 +11,10 @@ import java.util.concurrent.RecursiveTask;
  * builds of more than {@value #MORTON_ABOVE} items finish their ranges of up to
  * {@value #MORTON_RANGE} by Morton order instead (docs/benchmarks.md section 15). Subtrees of more
  * than 10,000 items are built in parallel with fork/join; the tree is the same for any number of
- * threads. The nodes are written in place into the arrays the {@link Bvh} keeps,
- * and the items' bounds are reordered in the caller's array rather than copied, so the build needs
- * no memory per item beyond its result.
+ * threads. The items' bounds are reordered in the caller's array rather than copied, the build
+ * records only each node's children, and the boxes are computed at the end into an array of the
+ * final size: at most about 134 bytes per item while building, the tree included, where copies
+ * and a second layout took 300.
  */
 final class BvhBuilder {
     private static final int BINS = 16;

@@ -30,17 +30,20 @@ class BvhBuilderTest {
         int[] order = new int[n];
         Bvh bvh = BvhBuilder.build(boxes.clone(), n, order);
         int[] seen = new int[n];
-        int leaves = walk(bvh, 0, boxes, order, seen, bvh.root);
+        int[] depth = {0};
+        int leaves = walk(bvh, 0, boxes, order, seen, bvh.root, 1, depth);
+        // Walkers size their stacks by it.
+        assertThat(bvh.depth).isEqualTo(depth[0]);
         for (int i = 0; i < n; i++) assertThat(seen[i]).as("item %d", i).isEqualTo(1);
         assertThat(leaves).isGreaterThan(0);
         assertThat(bvh.nodeCount).isEqualTo(2 * leaves - 1).isLessThan(2 * n);
     }
 
     /**
-     * Checks the children of inner node {@code node} (or the items of a leaf) against its box
-     * {@code box}; returns the leaves below.
+     * Checks the children of inner node {@code node} (or the items of a leaf) at {@code level}
+     * against its box {@code box}; returns the leaves below, the deepest leaf's level into depth.
      */
-    private static int walk(Bvh bvh, int node, double[] boxes, int[] order, int[] seen, double[] box) {
+    private static int walk(Bvh bvh, int node, double[] boxes, int[] order, int[] seen, double[] box, int level, int[] depth) {
         double[] union = {Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY,
                 Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY};
         if (Bvh.isLeaf(node)) {
@@ -51,6 +54,7 @@ class BvhBuilderTest {
                 include(union, boxes, 6 * item);
             }
             assertThat(union).as("leaf box").containsExactly(plusZero(box));
+            depth[0] = Math.max(depth[0], level);
             return 1;
         }
         int leaves = 0;
@@ -61,7 +65,7 @@ class BvhBuilderTest {
             int next = bvh.children[2 * node + c];
             // Depth-first order: inner children come after their parent.
             if (!Bvh.isLeaf(next)) assertThat(next).isGreaterThan(node);
-            leaves += walk(bvh, next, boxes, order, seen, child);
+            leaves += walk(bvh, next, boxes, order, seen, child, level + 1, depth);
         }
         return leaves;
     }
