@@ -617,14 +617,20 @@ final class BvhBuilder {
         }
     }
 
+    /**
+     * Widens bin {@code b} by item {@code item}. Comparisons rather than Math.min and Math.max (as
+     * in {@link #measure}): after its first few items a bin's box rarely grows, so the branches
+     * are well predicted, and item bounds are finite.
+     */
     private static void grow(double[] boxes, int b, double[] items, int item) {
         int o = 6 * b, k = 6 * item;
-        boxes[o] = Math.min(boxes[o], items[k]);
-        boxes[o + 1] = Math.min(boxes[o + 1], items[k + 1]);
-        boxes[o + 2] = Math.min(boxes[o + 2], items[k + 2]);
-        boxes[o + 3] = Math.max(boxes[o + 3], items[k + 3]);
-        boxes[o + 4] = Math.max(boxes[o + 4], items[k + 4]);
-        boxes[o + 5] = Math.max(boxes[o + 5], items[k + 5]);
+        double v;
+        if ((v = items[k]) < boxes[o]) boxes[o] = v;
+        if ((v = items[k + 1]) < boxes[o + 1]) boxes[o + 1] = v;
+        if ((v = items[k + 2]) < boxes[o + 2]) boxes[o + 2] = v;
+        if ((v = items[k + 3]) > boxes[o + 3]) boxes[o + 3] = v;
+        if ((v = items[k + 4]) > boxes[o + 4]) boxes[o + 4] = v;
+        if ((v = items[k + 5]) > boxes[o + 5]) boxes[o + 5] = v;
     }
 
     private static void include(double[] acc, double[] boxes, int b) {
