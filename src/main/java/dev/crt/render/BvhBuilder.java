@@ -1,13 +1,20 @@
 package dev.crt.render;
 
 import dev.crt.geom.Aabb;
+import java.util.Arrays;
 import java.util.concurrent.ForkJoinPool;
 import java.util.concurrent.RecursiveTask;
 
 /**
  * Builds a {@link Bvh} over item bounds with the binned surface area heuristic (16 bins on each
  * axis, or on the widest axis only for ranges of more than {@value #ONE_AXIS_ABOVE} items);
- * subtrees of more than 10,000 items are built in parallel with fork/join.
+ * builds of more than {@value #MORTON_ABOVE} items finish their ranges of up to
+ * {@value #MORTON_RANGE} by Morton order instead (docs/benchmarks.md section 15). Subtrees of more
+ * than 10,000 items are built in parallel with fork/join; the tree is the same for any number of
+ * threads. The items' bounds are reordered in the caller's array rather than copied, the build
+ * records only each node's children, and the boxes are computed at the end into an array of the
+ * final size: at most about 134 bytes per item while building, the tree included, where copies
+ * and a second layout took 300.
  */
 final class BvhBuilder {
     private static final int BINS = 16;
@@ -19,57 +26,63 @@ final class BvhBuilder {
      * own hierarchy among them, try all three.
      */
     static final int ONE_AXIS_ABOVE = 1 << 16;
+    /**
+     * Builds of more items than this finish their ranges of at most {@link #MORTON_RANGE} items
+     * by Morton order instead of binning: one sort per range instead of a binning pass per level
+     * and its per-node work. docs/benchmarks.md section 15: a million spheres or triangles build in
+     * about half the CPU time; the trees' SAH cost is 10–13 % higher, which the spheres' render
+     * did not show and a million-triangle ball's did (about 10 % slower). Smaller builds, every
+     * shipped scene's among them, are binned to the leaves and their trees are unchanged.
+     */
+    static final int MORTON_ABOVE = 1 << 17;
+    static final int MORTON_RANGE = 1 << 12;
     private static final double TRAVERSAL_COST = 1.0;
     private static final double INTERSECTION_COST = 1.5;
 
     /**
-     * Boxes and centroids by position in {@link #order}; partitioning moves them with their items,
-     * so every pass over a range reads memory in sequence.
+     * The items' boxes (six doubles each), in the order of {@link #order}: partitioning moves them
+     * with their items, so every pass over a range reads memory in sequence. Centroids are
+     * computed from them where needed, in the same arithmetic as the box's own midpoint.
      */
     private final double[] bounds;
-    private final double[] centroid;
     /** The item order: leaves refer to ranges of it. */
-    final int[] order;
+    private final int[] order;
+    /**
+     * The children of the inner nodes while building, indexed by slot: the subtree over items
+     * [lo, hi) owns slots [at, at + hi − lo − 1) (a binary tree over m items has at most m − 1
+     * inner nodes), its root at {@code at}, its left subtree from at + 1 and its right one from
+     * at + (mid − lo). Slots are in depth-first order, with gaps where leaves hold several items
+     * (their children stay 0, which no inner node's are: a child is a leaf, &lt; 0, or a later
+     * slot); subtrees built in parallel write disjoint slots. The boxes come afterwards, into an
+     * array of the final size (see {@link #finish}).
+     */
+    private final int[] children;
+    /** Whether ranges of at most {@link #MORTON_RANGE} items are split in Morton order (see {@link #MORTON_ABOVE}). */
+    private final boolean morton;
 
-    private BvhBuilder(double[] itemBounds, int n) {
-        bounds = itemBounds.clone();
-        centroid = new double[3 * n];
-        order = new int[n];
-        childBox = new double[12 * (n - 1)];
+    private BvhBuilder(double[] bounds, int n, int[] order) {
+        morton = n > MORTON_ABOVE;
+        this.bounds = bounds;
+        this.order = order;
         children = new int[2 * (n - 1)];
-        inner = new boolean[n - 1];
-        for (int i = 0; i < n; i++) {
-            order[i] = i;
-            for (int a = 0; a < 3; a++) centroid[3 * i + a] = 0.5 * (bounds[6 * i + a] + bounds[6 * i + 3 + a]);
-        }
+        for (int i = 0; i < n; i++) order[i] = i;
     }
 
     private void swap(int i, int j) {
         int x = order[i];
         order[i] = order[j];
         order[j] = x;
+        double[] bounds = this.bounds;
         for (int a = 0; a < 6; a++) {
             double v = bounds[6 * i + a];
             bounds[6 * i + a] = bounds[6 * j + a];
             bounds[6 * j + a] = v;
         }
-        for (int a = 0; a < 3; a++) {
-            double v = centroid[3 * i + a];
-            centroid[3 * i + a] = centroid[3 * j + a];
-            centroid[3 * j + a] = v;
-        }
     }
 
-    /**
-     * Inner nodes while building, before compaction: the subtree over items [lo, hi) owns slots
-     * [at, at + hi − lo − 1) (a binary tree over m items has at most m − 1 inner nodes), its root
-     * at {@code at}, its left subtree from at + 1 and its right one from at + (mid − lo). Slots
-     * are in depth-first order with gaps where leaves hold several items; subtrees built in
-     * parallel write disjoint slots.
-     */
-    private final double[] childBox;
-    private final int[] children;
-    private final boolean[] inner;
+    private double centroid(int i, int axis) {
+        return 0.5 * (bounds[6 * i + axis] + bounds[6 * i + 3 + axis]);
+    }
 
     /**
      * Writes {@code b} as item {@code i} of a flat bounds array, widened by an ulp each way:
@@ -84,101 +97,276 @@ final class BvhBuilder {
         flat[6 * i + 5] = Math.nextUp(b.max().z());
     }
 
-    /** The hierarchy over {@code n} items whose boxes are {@code bounds} (six doubles each); item order in {@code orderOut}. */
+    /**
+     * The hierarchy over {@code n} items whose boxes are {@code bounds} (six doubles each); item
+     * order in {@code orderOut}. The boxes are reordered in place: afterwards the box at position
+     * k is that of item {@code orderOut[k]}.
+     */
     static Bvh build(double[] bounds, int n, int[] orderOut) {
         // More items than a leaf takes, so that the root is an inner node.
         if (n <= MAX_LEAF || n > (Integer.MAX_VALUE >>> Bvh.LEAF_COUNT_BITS)) throw new IllegalArgumentException("items: " + n);
-        BvhBuilder b = new BvhBuilder(bounds, n);
-        double[] rootBox = new double[6];
-        int root;
+        BvhBuilder b = new BvhBuilder(bounds, n, orderOut);
+        int root, depth;
         if (n > PARALLEL_THRESHOLD) {
             // A pool of its own: the common pool leaves one core idle (its parallelism is cores − 1,
             // and the thread that submits only waits).
             ForkJoinPool pool = new ForkJoinPool(Runtime.getRuntime().availableProcessors());
             try {
-                root = pool.invoke(b.new Task(0, n, 0, rootBox, 0));
+                Task task = b.new Task(0, n, 0, 1);
+                root = pool.invoke(task);
+                depth = task.depth;
             } finally {
                 pool.shutdown();
             }
         } else {
-            root = b.subtree(0, n, 0, new Scratch(), rootBox, 0);
+            Scratch sc = new Scratch();
+            root = b.subtree(0, n, 0, sc, 1);
+            depth = sc.depth;
         }
-        System.arraycopy(b.order, 0, orderOut, 0, n);
         if (Bvh.isLeaf(root)) throw new IllegalStateException("a root leaf over " + n + " items");
-        return b.compact(rootBox);
+        return b.finish(depth);
     }
 
-    /** Renumbers the inner nodes densely, keeping depth-first order. */
-    private Bvh compact(double[] rootBox) {
-        int slots = inner.length;
-        int[] index = new int[slots];
+    /**
+     * Renumbers the inner nodes densely, keeping depth-first order, and computes their boxes from
+     * the leaves up into an array of the final size. Each box is the union of the items' boxes
+     * below it, as the builder measured it (minimum and maximum are exact, whatever the order);
+     * a leaf's items are consecutive in {@link #bounds}, so the leaves are read in one sequential
+     * pass.
+     */
+    private Bvh finish(int depth) {
+        int slots = children.length / 2;
         int count = 0;
-        for (int s = 0; s < slots; s++) if (inner[s]) index[s] = count++;
-        double[] box = new double[Bvh.NODE * count];
-        int[] links = new int[2 * count];
-        int[] level = new int[count];
-        level[0] = 1;
-        int depth = 0;
-        for (int s = 0; s < slots; s++) {
-            if (!inner[s]) continue;
-            int k = index[s];
-            Bvh.putChild(box, k, 0, childBox, 12 * s);
-            Bvh.putChild(box, k, 1, childBox, 12 * s + 6);
-            for (int c = 0; c < 2; c++) {
-                int child = children[2 * s + c];
-                if (Bvh.isLeaf(child)) {
-                    depth = Math.max(depth, level[k] + 1);
-                } else {
-                    child = index[child];
-                    // Depth-first order: a parent comes before its children.
-                    level[child] = level[k] + 1;
+        for (int s = 0; s < slots; s++) if (children[2 * s] != 0) count++;
+        int[] links = children;
+        int[] index = null;
+        if (count < slots) {
+            index = new int[slots];
+            links = new int[2 * count];
+            for (int s = 0, k = 0; s < slots; s++) if (children[2 * s] != 0) index[s] = k++;
+            for (int s = 0; s < slots; s++) {
+                if (children[2 * s] == 0) continue;
+                for (int c = 0; c < 2; c++) {
+                    int child = children[2 * s + c];
+                    links[2 * index[s] + c] = Bvh.isLeaf(child) ? child : index[child];
                 }
-                links[2 * k + c] = child;
             }
         }
+        double[] box = new double[Bvh.NODE * count];
+        // Depth-first order puts children after their parent: from the last node back, both
+        // children's boxes are known when a node's are written.
+        double[] acc = new double[6];
+        for (int k = count - 1; k >= 0; k--) {
+            for (int c = 0; c < 2; c++) {
+                int child = links[2 * k + c];
+                if (Bvh.isLeaf(child)) {
+                    unionOfItems(Bvh.leafFirst(child), Bvh.leafFirst(child) + Bvh.leafCount(child), acc);
+                } else {
+                    unionOfChildren(box, child, acc);
+                }
+                for (int a = 0; a < 3; a++) {
+                    box[Bvh.NODE * k + 2 * a + c] = acc[a];
+                    box[Bvh.NODE * k + Bvh.MAX + 2 * a + c] = acc[3 + a];
+                }
+            }
+        }
+        double[] rootBox = new double[6];
+        unionOfChildren(box, 0, rootBox);
         return new Bvh(box, links, rootBox, 2 * count + 1, depth);
+    }
+
+    private void unionOfItems(int from, int to, double[] acc) {
+        double[] bounds = this.bounds;
+        double minX = Double.POSITIVE_INFINITY, minY = Double.POSITIVE_INFINITY, minZ = Double.POSITIVE_INFINITY;
+        double maxX = Double.NEGATIVE_INFINITY, maxY = Double.NEGATIVE_INFINITY, maxZ = Double.NEGATIVE_INFINITY;
+        for (int i = from; i < to; i++) {
+            int k = 6 * i;
+            double v;
+            if ((v = bounds[k]) < minX) minX = v;
+            if ((v = bounds[k + 1]) < minY) minY = v;
+            if ((v = bounds[k + 2]) < minZ) minZ = v;
+            if ((v = bounds[k + 3]) > maxX) maxX = v;
+            if ((v = bounds[k + 4]) > maxY) maxY = v;
+            if ((v = bounds[k + 5]) > maxZ) maxZ = v;
+        }
+        acc[0] = minX;
+        acc[1] = minY;
+        acc[2] = minZ;
+        acc[3] = maxX;
+        acc[4] = maxY;
+        acc[5] = maxZ;
+    }
+
+    /** The union of the two children's boxes of node {@code k}, into acc (min x, y, z, max x, y, z). */
+    private static void unionOfChildren(double[] box, int k, double[] acc) {
+        int o = Bvh.NODE * k;
+        for (int a = 0; a < 3; a++) {
+            double l = box[o + 2 * a], r = box[o + 2 * a + 1];
+            acc[a] = r < l ? r : l;
+            l = box[o + Bvh.MAX + 2 * a];
+            r = box[o + Bvh.MAX + 2 * a + 1];
+            acc[3 + a] = r > l ? r : l;
+        }
     }
 
     private final class Task extends RecursiveTask<Integer> {
         private static final long serialVersionUID = 1L;
-        private final int lo, hi, at;
-        private final double[] boxOut;
-        private final int boxAt;
+        private final int lo, hi, at, level;
+        /** The levels of the subtree's deepest leaf, counted from the tree's root; set by {@link #compute}. */
+        int depth;
 
-        Task(int lo, int hi, int at, double[] boxOut, int boxAt) {
+        Task(int lo, int hi, int at, int level) {
             this.lo = lo;
             this.hi = hi;
             this.at = at;
-            this.boxOut = boxOut;
-            this.boxAt = boxAt;
+            this.level = level;
         }
 
         @Override
         protected Integer compute() {
             Scratch sc = new Scratch();
-            int mid = split(lo, hi, sc, boxOut, boxAt);
-            if (mid < 0) return Bvh.leaf(lo, hi - lo);
-            inner[at] = true;
+            if (morton && hi - lo <= MORTON_RANGE) {
+                int root = mortonSubtree(lo, hi, at, sc, level);
+                depth = sc.depth;
+                return root;
+            }
+            int mid = split(lo, hi, sc);
+            if (mid < 0) {
+                depth = level;
+                return Bvh.leaf(lo, hi - lo);
+            }
             int leftAt = at + 1, rightAt = at + (mid - lo);
-            Task left = new Task(lo, mid, leftAt, childBox, 12 * at);
-            Task right = new Task(mid, hi, rightAt, childBox, 12 * at + 6);
+            Task left = new Task(lo, mid, leftAt, level + 1);
+            Task right = new Task(mid, hi, rightAt, level + 1);
             if (mid - lo > PARALLEL_THRESHOLD) left.fork();
-            children[2 * at + 1] = hi - mid > PARALLEL_THRESHOLD ? right.compute()
-                    : subtree(mid, hi, rightAt, sc, childBox, 12 * at + 6);
-            children[2 * at] = mid - lo > PARALLEL_THRESHOLD ? left.join()
-                    : subtree(lo, mid, leftAt, sc, childBox, 12 * at);
+            int r, l;
+            if (hi - mid > PARALLEL_THRESHOLD) {
+                r = right.compute();
+                sc.depth = right.depth;
+            } else {
+                r = subtree(mid, hi, rightAt, sc, level + 1);
+            }
+            if (mid - lo > PARALLEL_THRESHOLD) {
+                l = left.join();
+                sc.depth = Math.max(sc.depth, left.depth);
+            } else {
+                l = subtree(lo, mid, leftAt, sc, level + 1);
+            }
+            children[2 * at] = l;
+            children[2 * at + 1] = r;
+            depth = sc.depth;
             return at;
         }
     }
 
-    /** Builds the subtree over [lo, hi) from slot {@code at}, its box into {@code boxOut}; returns its root (a slot or a leaf). */
-    private int subtree(int lo, int hi, int at, Scratch sc, double[] boxOut, int boxAt) {
-        int mid = split(lo, hi, sc, boxOut, boxAt);
-        if (mid < 0) return Bvh.leaf(lo, hi - lo);
-        inner[at] = true;
-        children[2 * at] = subtree(lo, mid, at + 1, sc, childBox, 12 * at);
-        children[2 * at + 1] = subtree(mid, hi, at + (mid - lo), sc, childBox, 12 * at + 6);
+    /**
+     * Builds the subtree over [lo, hi), whose root is at {@code level}, from slot {@code at};
+     * returns its root (a slot or a leaf) and raises {@code sc.depth} to the level of its deepest
+     * leaf.
+     */
+    private int subtree(int lo, int hi, int at, Scratch sc, int level) {
+        if (morton && hi - lo <= MORTON_RANGE) return mortonSubtree(lo, hi, at, sc, level);
+        int mid = split(lo, hi, sc);
+        if (mid < 0) {
+            if (level > sc.depth) sc.depth = level;
+            return Bvh.leaf(lo, hi - lo);
+        }
+        int l = subtree(lo, mid, at + 1, sc, level + 1);
+        int r = subtree(mid, hi, at + (mid - lo), sc, level + 1);
+        children[2 * at] = l;
+        children[2 * at + 1] = r;
         return at;
+    }
+
+    /**
+     * Builds the subtree over [lo, hi) as {@link #subtree} does, splitting by the items' Morton
+     * codes (their centroids on a grid of 1024 cubes along the range's longest side): each
+     * range is split where the highest bit in which its first and last codes differ changes, a
+     * range of equal codes in the middle, and ranges of up to {@value #MAX_LEAF} items become a
+     * leaf by the same cost rule as binned ones.
+     */
+    private int mortonSubtree(int lo, int hi, int at, Scratch sc, int level) {
+        int n = hi - lo;
+        if (sc.keys == null) {
+            sc.keys = new long[MORTON_RANGE];
+            sc.orderCopy = new int[MORTON_RANGE];
+            sc.boundsCopy = new double[6 * MORTON_RANGE];
+        }
+        measure(lo, hi, sc);
+        double[] cmin = sc.cmin, cmax = sc.cmax;
+        double extent = Math.max(cmax[0] - cmin[0], Math.max(cmax[1] - cmin[1], cmax[2] - cmin[2]));
+        double k = extent > 0 ? 1024 / extent : 0;
+        long[] keys = sc.keys;
+        double[] bounds = this.bounds;
+        for (int i = lo; i < hi; i++) {
+            int x = grid(centroid(i, 0), cmin[0], k), y = grid(centroid(i, 1), cmin[1], k), z = grid(centroid(i, 2), cmin[2], k);
+            keys[i - lo] = (long) (spread(x) << 2 | spread(y) << 1 | spread(z)) << 32 | (i - lo);
+        }
+        Arrays.sort(keys, 0, n);
+        int[] orderCopy = sc.orderCopy;
+        double[] boundsCopy = sc.boundsCopy;
+        for (int j = 0; j < n; j++) {
+            int from = lo + (int) keys[j];
+            orderCopy[j] = order[from];
+            System.arraycopy(bounds, 6 * from, boundsCopy, 6 * j, 6);
+        }
+        System.arraycopy(orderCopy, 0, order, lo, n);
+        System.arraycopy(boundsCopy, 0, bounds, 6 * lo, 6 * n);
+        return mortonSplit(lo, hi, lo, at, sc, level);
+    }
+
+    /** The subtree over [a, b) of the range sorted by {@link #mortonSubtree} from {@code lo}. */
+    private int mortonSplit(int a, int b, int lo, int at, Scratch sc, int level) {
+        int n = b - a;
+        long[] code = sc.keys;
+        long first = code[a - lo] >>> 32, last = code[b - 1 - lo] >>> 32;
+        int mid;
+        if (first == last) {
+            mid = a + n / 2;
+        } else {
+            // The codes share every bit above the highest one in which they differ: those with
+            // it set come last.
+            long bit = Long.highestOneBit(first ^ last) << 32;
+            int i = a + 1, j = b - 1;
+            while (i < j) {
+                int m = (i + j) >>> 1;
+                if ((code[m - lo] & bit) != 0) j = m; else i = m + 1;
+            }
+            mid = i;
+        }
+        boolean leaf = n == 1;
+        if (!leaf && n <= MAX_LEAF) {
+            double[] box = sc.box, left = sc.left, right = sc.right;
+            unionOfItems(a, b, box);
+            unionOfItems(a, mid, left);
+            unionOfItems(mid, b, right);
+            double parentArea = area(box);
+            double splitCost = TRAVERSAL_COST
+                    + INTERSECTION_COST * (area(left) * (mid - a) + area(right) * (b - mid)) / parentArea;
+            leaf = splitCost >= INTERSECTION_COST * n || !(parentArea > 0);
+        }
+        if (leaf) {
+            if (level > sc.depth) sc.depth = level;
+            return Bvh.leaf(a, n);
+        }
+        int l = mortonSplit(a, mid, lo, at + 1, sc, level + 1);
+        int r = mortonSplit(mid, b, lo, at + (mid - a), sc, level + 1);
+        children[2 * at] = l;
+        children[2 * at + 1] = r;
+        return at;
+    }
+
+    private static int grid(double c, double min, double k) {
+        int g = (int) ((c - min) * k);
+        return g < 0 ? 0 : Math.min(g, 1023);
+    }
+
+    /** The ten low bits of {@code v} spread to every third bit. */
+    private static int spread(int v) {
+        v = (v | v << 16) & 0x030000FF;
+        v = (v | v << 8) & 0x0300F00F;
+        v = (v | v << 4) & 0x030C30C3;
+        return (v | v << 2) & 0x09249249;
     }
 
     /**
@@ -194,9 +382,17 @@ final class BvhBuilder {
         final int[] rightCount = new int[BINS];
         final double[] acc = new double[6];
         final double[] cmin = new double[3], cmax = new double[3], scale = new double[3];
+        /** The box of the range being split, and of its halves in {@link #mortonSplit}. */
+        final double[] box = new double[6], left = new double[6], right = new double[6];
         /** The result of {@link #sweep}. */
         double bestCost;
         int bestAxis, bestBin;
+        /** The deepest leaf's level seen by this thread's {@link #subtree} calls. */
+        int depth;
+        /** Sort keys, then Morton codes, of {@link #mortonSubtree}'s range, and its reordering space; made when first needed. */
+        long[] keys;
+        int[] orderCopy;
+        double[] boundsCopy;
 
         Scratch() {
             for (int b = 0; b < 3 * BINS; b++) resetBox(binBox, b);
@@ -204,15 +400,15 @@ final class BvhBuilder {
     }
 
     /**
-     * Writes the box of [lo, hi) into {@code box} at {@code at}, then partitions the range by the
+     * Measures the box of [lo, hi) (into sc), then partitions the range by the
      * best SAH split and returns its middle, or returns −1 when the range is a leaf. Each pass
      * over the items is a method of its own: small methods are compiled early and quickly, where
      * one large one ran interpreted through the first levels of a million-item build while the
      * compiler worked on it for seconds.
      */
-    private int split(int lo, int hi, Scratch sc, double[] box, int at) {
+    private int split(int lo, int hi, Scratch sc) {
         int n = hi - lo;
-        measure(lo, hi, sc, box, at);
+        measure(lo, hi, sc);
         if (n <= 1) return -1;
         double[] cmin = sc.cmin, cmax = sc.cmax, scale = sc.scale;
         for (int axis = 0; axis < 3; axis++) {
@@ -232,7 +428,7 @@ final class BvhBuilder {
         }
         sweep(sc);
         int bestAxis = sc.bestAxis;
-        double parentArea = area(box[at], box[at + 1], box[at + 2], box[at + 3], box[at + 4], box[at + 5]);
+        double parentArea = area(sc.box);
         if (bestAxis < 0) {
             // All centroids coincide: split the range in the middle if it is too big for a leaf.
             return n <= MAX_LEAF ? -1 : lo + n / 2;
@@ -242,30 +438,31 @@ final class BvhBuilder {
         return partition(lo, hi, bestAxis, cmin[bestAxis], scale[bestAxis], sc.bestBin);
     }
 
-    /** One pass for the box of [lo, hi) (into box at {@code at}) and the bounds of its centroids (into sc). */
-    private void measure(int lo, int hi, Scratch sc, double[] box, int at) {
+    /** One pass for the box of [lo, hi) and the bounds of its centroids (into sc). */
+    private void measure(int lo, int hi, Scratch sc) {
         double minX = Double.POSITIVE_INFINITY, minY = Double.POSITIVE_INFINITY, minZ = Double.POSITIVE_INFINITY;
         double maxX = Double.NEGATIVE_INFINITY, maxY = Double.NEGATIVE_INFINITY, maxZ = Double.NEGATIVE_INFINITY;
         double cminX = Double.POSITIVE_INFINITY, cminY = Double.POSITIVE_INFINITY, cminZ = Double.POSITIVE_INFINITY;
         double cmaxX = Double.NEGATIVE_INFINITY, cmaxY = Double.NEGATIVE_INFINITY, cmaxZ = Double.NEGATIVE_INFINITY;
         // Comparisons rather than Math.min and Math.max, which also order −0 and NaN: item bounds
         // are finite, and these loops run over every item at every level of the tree.
-        double[] bounds = this.bounds, centroid = this.centroid;
+        double[] bounds = this.bounds;
         for (int i = lo; i < hi; i++) {
             int k = 6 * i;
+            double x0 = bounds[k], y0 = bounds[k + 1], z0 = bounds[k + 2];
+            double x1 = bounds[k + 3], y1 = bounds[k + 4], z1 = bounds[k + 5];
+            if (x0 < minX) minX = x0;
+            if (y0 < minY) minY = y0;
+            if (z0 < minZ) minZ = z0;
+            if (x1 > maxX) maxX = x1;
+            if (y1 > maxY) maxY = y1;
+            if (z1 > maxZ) maxZ = z1;
             double v;
-            if ((v = bounds[k]) < minX) minX = v;
-            if ((v = bounds[k + 1]) < minY) minY = v;
-            if ((v = bounds[k + 2]) < minZ) minZ = v;
-            if ((v = bounds[k + 3]) > maxX) maxX = v;
-            if ((v = bounds[k + 4]) > maxY) maxY = v;
-            if ((v = bounds[k + 5]) > maxZ) maxZ = v;
-            int c = 3 * i;
-            if ((v = centroid[c]) < cminX) cminX = v;
+            if ((v = 0.5 * (x0 + x1)) < cminX) cminX = v;
             if (v > cmaxX) cmaxX = v;
-            if ((v = centroid[c + 1]) < cminY) cminY = v;
+            if ((v = 0.5 * (y0 + y1)) < cminY) cminY = v;
             if (v > cmaxY) cmaxY = v;
-            if ((v = centroid[c + 2]) < cminZ) cminZ = v;
+            if ((v = 0.5 * (z0 + z1)) < cminZ) cminZ = v;
             if (v > cmaxZ) cmaxZ = v;
         }
         double[] cmin = sc.cmin, cmax = sc.cmax;
@@ -275,37 +472,38 @@ final class BvhBuilder {
         cmax[0] = cmaxX;
         cmax[1] = cmaxY;
         cmax[2] = cmaxZ;
-        box[at] = minX;
-        box[at + 1] = minY;
-        box[at + 2] = minZ;
-        box[at + 3] = maxX;
-        box[at + 4] = maxY;
-        box[at + 5] = maxZ;
+        double[] box = sc.box;
+        box[0] = minX;
+        box[1] = minY;
+        box[2] = minZ;
+        box[3] = maxX;
+        box[4] = maxY;
+        box[5] = maxZ;
     }
 
     /** Bins every item of [lo, hi) on all three axes at once (those of non-zero scale), so the item data is read once. */
     private void binAll(int lo, int hi, Scratch sc) {
         int[] binCount = sc.binCount;
-        double[] binBox = sc.binBox, centroid = this.centroid, bounds = this.bounds;
+        double[] binBox = sc.binBox, bounds = this.bounds;
         double kx = sc.scale[0], ky = sc.scale[1], kz = sc.scale[2];
         double mx = sc.cmin[0], my = sc.cmin[1], mz = sc.cmin[2];
         int maskX = 0, maskY = 0, maskZ = 0;
         for (int i = lo; i < hi; i++) {
-            int c = 3 * i;
+            int c = 6 * i;
             if (kx != 0) {
-                int bin = bin(centroid[c], mx, kx);
+                int bin = bin(0.5 * (bounds[c] + bounds[c + 3]), mx, kx);
                 maskX |= 1 << bin;
                 binCount[bin]++;
                 grow(binBox, bin, bounds, i);
             }
             if (ky != 0) {
-                int bin = bin(centroid[c + 1], my, ky);
+                int bin = bin(0.5 * (bounds[c + 1] + bounds[c + 4]), my, ky);
                 maskY |= 1 << bin;
                 binCount[BINS + bin]++;
                 grow(binBox, BINS + bin, bounds, i);
             }
             if (kz != 0) {
-                int bin = bin(centroid[c + 2], mz, kz);
+                int bin = bin(0.5 * (bounds[c + 2] + bounds[c + 5]), mz, kz);
                 maskZ |= 1 << bin;
                 binCount[2 * BINS + bin]++;
                 grow(binBox, 2 * BINS + bin, bounds, i);
@@ -319,11 +517,11 @@ final class BvhBuilder {
     /** Bins every item of [lo, hi) on {@code axis} alone; returns the mask of the bins used. */
     private int binAxis(int lo, int hi, Scratch sc, int axis) {
         int[] binCount = sc.binCount;
-        double[] binBox = sc.binBox, centroid = this.centroid, bounds = this.bounds;
+        double[] binBox = sc.binBox, bounds = this.bounds;
         double k = sc.scale[axis], min = sc.cmin[axis];
         int base = axis * BINS, mask = 0;
         for (int i = lo; i < hi; i++) {
-            int bin = bin(centroid[3 * i + axis], min, k);
+            int bin = bin(0.5 * (bounds[6 * i + axis] + bounds[6 * i + 3 + axis]), min, k);
             mask |= 1 << bin;
             binCount[base + bin]++;
             grow(binBox, base + bin, bounds, i);
@@ -388,10 +586,9 @@ final class BvhBuilder {
 
     /** Moves the items of [lo, hi) whose centroid falls in a bin up to {@code last} on {@code axis} first; returns where the rest start. */
     private int partition(int lo, int hi, int axis, double min, double k, int last) {
-        double[] centroid = this.centroid;
         int i = lo, j = hi - 1;
         while (i <= j) {
-            if (bin(centroid[3 * i + axis], min, k) <= last) {
+            if (bin(centroid(i, axis), min, k) <= last) {
                 i++;
             } else {
                 swap(i, j);
@@ -420,14 +617,20 @@ final class BvhBuilder {
         }
     }
 
+    /**
+     * Widens bin {@code b} by item {@code item}. Comparisons rather than Math.min and Math.max (as
+     * in {@link #measure}): after its first few items a bin's box rarely grows, so the branches
+     * are well predicted, and item bounds are finite.
+     */
     private static void grow(double[] boxes, int b, double[] items, int item) {
         int o = 6 * b, k = 6 * item;
-        boxes[o] = Math.min(boxes[o], items[k]);
-        boxes[o + 1] = Math.min(boxes[o + 1], items[k + 1]);
-        boxes[o + 2] = Math.min(boxes[o + 2], items[k + 2]);
-        boxes[o + 3] = Math.max(boxes[o + 3], items[k + 3]);
-        boxes[o + 4] = Math.max(boxes[o + 4], items[k + 4]);
-        boxes[o + 5] = Math.max(boxes[o + 5], items[k + 5]);
+        double v;
+        if ((v = items[k]) < boxes[o]) boxes[o] = v;
+        if ((v = items[k + 1]) < boxes[o + 1]) boxes[o + 1] = v;
+        if ((v = items[k + 2]) < boxes[o + 2]) boxes[o + 2] = v;
+        if ((v = items[k + 3]) > boxes[o + 3]) boxes[o + 3] = v;
+        if ((v = items[k + 4]) > boxes[o + 4]) boxes[o + 4] = v;
+        if ((v = items[k + 5]) > boxes[o + 5]) boxes[o + 5] = v;
     }
 
     private static void include(double[] acc, double[] boxes, int b) {
