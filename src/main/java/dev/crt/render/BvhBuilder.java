@@ -9,7 +9,7 @@ import java.util.concurrent.RecursiveTask;
  * Builds a {@link Bvh} over item bounds with the binned surface area heuristic (16 bins on each
  * axis, or on the widest axis only for ranges of more than {@value #ONE_AXIS_ABOVE} items);
  * builds of more than {@value #MORTON_ABOVE} items finish their ranges of up to
- * {@value #MORTON_RANGE} by Morton order instead (docs/benchmarks.md section 15). Subtrees of more
+ * {@value #MORTON_RANGE} by Morton order instead (docs/benchmarks.md section 18). Subtrees of more
  * than 10,000 items are built in parallel with fork/join; the tree is the same for any number of
  * threads. The items' bounds are reordered in the caller's array rather than copied, the build
  * records only each node's children, and the boxes are computed at the end into an array of the
@@ -29,7 +29,7 @@ final class BvhBuilder {
     /**
      * Builds of more items than this finish their ranges of at most {@link #MORTON_RANGE} items
      * by Morton order instead of binning: one sort per range instead of a binning pass per level
-     * and its per-node work. docs/benchmarks.md section 15: a million spheres or triangles build in
+     * and its per-node work. docs/benchmarks.md section 18: a million spheres or triangles build in
      * about half the CPU time; the trees' SAH cost is 10–13 % higher, which the spheres' render
      * did not show and a million-triangle ball's did (about 10 % slower). Smaller builds, every
      * shipped scene's among them, are binned to the leaves and their trees are unchanged.
