@@ -71,7 +71,8 @@ final class RenderOptions {
         s = s.withSize(width != null ? width : s.width(), height != null ? height : s.height());
         s = s.withSampling(supersampling != null ? supersampling : s.supersampling(),
                 dofSamples != null ? dofSamples : s.dofSamples());
-        s = s.withSampler(sampler != null ? Sampler.of(sampler).orElseThrow() : s.sampler(), noise != null ? noise : s.noise());
+        if (sampler != null) s = s.withSampler(Sampler.of(sampler).orElseThrow(), noise != null ? noise : s.noise());
+        else if (noise != null) s = s.withNoise(noise);
         if (shading != null) s = s.withShading(Shading.of(shading).orElseThrow());
         return scene.withSettings(s);
     }

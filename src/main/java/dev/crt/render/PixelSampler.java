@@ -59,7 +59,7 @@ final class PixelSampler {
         this.original = original;
         gridOffset = original != null && settings.supersampling() > 1 ? 0 : 0.5;
         this.camera = camera;
-        kind = settings.sampler();
+        kind = settings.effectiveSampler();
         grid = settings.supersampling();
         lensSamples = camera.hasLens() ? settings.dofSamples() : 1;
         depth = settings.effectiveRecursionDepth();

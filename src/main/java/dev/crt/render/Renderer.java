@@ -84,7 +84,7 @@ public final class Renderer {
         int workers = Math.max(1, Math.min(threads > 0 ? threads : Runtime.getRuntime().availableProcessors(), tiles));
         // The adaptive sampler renders twice: a pilot pass over every pixel, then, once every
         // pilot is in (a pixel's second pass reads its neighbours'), the pixels that need more.
-        boolean adaptive = settings.sampler() == Sampler.ADAPTIVE;
+        boolean adaptive = settings.effectiveSampler() == Sampler.ADAPTIVE;
         int passes = adaptive ? 2 : 1;
         float[] pilotVariance = adaptive ? new float[width * height] : null;
         CountDownLatch pilots = new CountDownLatch(adaptive ? tiles : 0);

@@ -75,10 +75,29 @@ public record Settings(
                 recursionDepth, gamma, width, height, sampler, seed, noise, shading, given);
     }
 
-    /** These settings with another sampler and adaptive noise target (in 8-bit levels). */
+    /** These settings with another sampler, chosen as a script's {@code sampler} would be, and adaptive noise target (in 8-bit levels). */
     public Settings withSampler(Sampler s, double noiseTarget) {
+        Set<String> named = new java.util.HashSet<>(given);
+        named.add("sampler");
         return new Settings(title, author, date, notes, lights, camera, background, supersampling,
-                dofSamples, recursionDepth, gamma, width, height, s, seed, noiseTarget, shading, given);
+                dofSamples, recursionDepth, gamma, width, height, s, seed, noiseTarget, shading, named);
+    }
+
+    /** These settings with another adaptive noise target (in 8-bit levels). */
+    public Settings withNoise(double noiseTarget) {
+        return new Settings(title, author, date, notes, lights, camera, background, supersampling,
+                dofSamples, recursionDepth, gamma, width, height, sampler, seed, noiseTarget, shading, given);
+    }
+
+    /**
+     * The sampler in force: the one named, else the grid, except with depth of field (an aperture
+     * and more than one lens sample), where the grid's four fixed sub-pixel points stop the picture
+     * converging and Sobol points reach its error with an eighth of the samples (docs/accuracy.md).
+     * The look of CRT 2015 keeps the grid that program used.
+     */
+    public Sampler effectiveSampler() {
+        if (gave("sampler")) return sampler;
+        return camera.aperture() > 0 && dofSamples > 1 && shading != Shading.ORIGINAL ? Sampler.SOBOL : Sampler.GRID;
     }
 
     /** These settings with another scene seed. */
