@@ -46,7 +46,7 @@ final class Features {
         m.put("lights", "spot and area lights");
         m.put("fresnel", "Fresnel reflectance");
         m.put("absorption", "Beer's-law absorption");
-        m.put("textures", "image, checker and noise textures and ray cones");
+        m.put("textures", "textures (image, checker, noise, marble, wood; with their ray cones)");
         m.put("bump", "bump maps");
         m.put("glossy", "glossy reflection and refraction");
         m.put("gooch", "Gooch shading and outlines");
