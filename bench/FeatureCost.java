@@ -23,8 +23,8 @@ import java.util.Map;
  * has rendered for {@link #WARMUP_SECONDS}); the render thread's CPU time per render (read by a
  * monitor at every finished tile: the thread is new for each render, so its clock starts at 0; the
  * JIT's and GC's threads are not counted). A feature's cost is the ratio of "all present" (the
- * mean of the copies) to "that one off" within the same round, median over rounds, so that the
- * load of a shared machine, which drifts between rounds, cancels. A setting whose feature the scene uses is
+ * copies' renders nearest in time) to "that one off", median over rounds, so that the load of a
+ * shared machine, which drifts, cancels. A setting whose feature the scene uses is
  * refused by the renderer and reported as such. Run:
  * java [-Dcrt.assets=DIR] bench/FeatureCost.java JAR SCENE.crt WIDTH HEIGHT ROUNDS [CSV]
  */
@@ -32,11 +32,11 @@ public class FeatureCost {
     /** Every setting renders at least this much CPU time before the rounds count, so that C2 has compiled each copy of the code. */
     private static final double WARMUP_SECONDS = 3;
     /**
-     * Copies of the jar with every feature present: their mean time in a round is the reference of
-     * that round, and their spread about it is what the method cannot tell apart (each copy is
-     * compiled by the JIT on its own, into its own place in the code cache).
+     * Copies of the jar with every feature present, spread through each round: a render's reference
+     * is the mean of the copies' renders nearest before and after it, and the copies' own ratios
+     * show what the method cannot tell apart (each copy is compiled by the JIT on its own).
      */
-    private static final int CONTROLS = 3;
+    private static final int CONTROLS = 4;
     private static final ThreadMXBean threads = ManagementFactory.getThreadMXBean();
     /** The render thread's CPU time (ns) at its last finished tile. */
     private static volatile long renderCpu;
@@ -49,9 +49,14 @@ public class FeatureCost {
 
         Map<String, String> names = featureNames(jar);
         List<String> settings = new ArrayList<>();
-        for (int c = 0; c < CONTROLS; c++) settings.add("");
-        settings.add("all");
-        settings.addAll(names.keySet());
+        List<String> off = new ArrayList<>(names.keySet());
+        off.add(0, "all");
+        // The copies with every feature present spread evenly through the order of a round.
+        int group = (off.size() + CONTROLS - 1) / CONTROLS;
+        for (int c = 0; c < CONTROLS; c++) {
+            settings.add("");
+            settings.addAll(off.subList(Math.min(off.size(), c * group), Math.min(off.size(), (c + 1) * group)));
+        }
 
         List<String> used = new ArrayList<>();
         List<String> run = new ArrayList<>();
@@ -89,6 +94,9 @@ public class FeatureCost {
         double loadBefore = os.getSystemLoadAverage();
         int n = run.size();
         double[][] cpu = new double[n][rounds];
+        // The renders in the order they ran: setting, round.
+        int[] ranK = new int[n * rounds], ranR = new int[n * rounds];
+        int ran = 0;
         long[] rays = new long[n];
         double[] warm = new double[n];
         int warmup = 0;
@@ -105,33 +113,49 @@ public class FeatureCost {
                 render.get(k).invoke(renderers.get(k), 1, monitors.get(k));
                 double c = renderCpu / 1e9;
                 cpu[k][r] = c;
+                ranK[ran] = k;
+                ranR[ran++] = r;
                 Object st = stats.get(k).invoke(renderers.get(k));
                 rays[k] = (long) st.getClass().getMethod("totalRays").invoke(st);
             }
         }
         double loadAfter = os.getSystemLoadAverage();
 
-        double[] reference = new double[rounds];
-        for (int r = 0; r < rounds; r++) {
-            for (int k = 0; k < CONTROLS; k++) reference[r] += cpu[k][r] / CONTROLS;
+        // Each render's reference: the mean of the all-present renders nearest before and after it.
+        double[][] reference = new double[n][rounds];
+        double referenceMin = Double.POSITIVE_INFINITY;
+        for (int i = 0; i < ran; i++) {
+            int k = ranK[i], r = ranR[i];
+            if (run.get(k).isEmpty()) referenceMin = Math.min(referenceMin, cpu[k][r]);
+            double sum = 0;
+            int count = 0;
+            for (int step : new int[] {-1, 1}) {
+                for (int j = i + step; j >= 0 && j < ran; j += step) {
+                    if (run.get(ranK[j]).isEmpty()) {
+                        sum += cpu[ranK[j]][ranR[j]];
+                        count++;
+                        break;
+                    }
+                }
+            }
+            reference[k][r] = sum / count;
         }
-        double referenceMin = min(reference);
         StringBuilder out = new StringBuilder();
         out.append(String.format(Locale.ROOT, "%s, %d×%d, %d rounds after %d warm-up rounds, one thread, render thread CPU time; load average %.2f before, %.2f after%n",
                 a[1], w, h, rounds, warmup, loadBefore, loadAfter));
-        out.append("on/off: the time with every feature present (the mean of the " + CONTROLS
-                + " copies marked (none)) over the time of the row's setting, in the same round; median over rounds and its 95 % interval;"
-                + " min ratio: the same with each setting's fastest round\n");
+        out.append("on/off: the time with every feature present (the mean of the renders of the " + CONTROLS
+                + " copies marked (none) nearest before and after) over the time of the row's render; median over rounds and its 95 % interval;"
+                + " min ratio: the fastest render of those copies over the row's fastest\n");
         out.append(String.format(Locale.ROOT, "%-12s %9s %8s %8s %11s %8s %15s %9s%n", "without", "median s", "ns/ray", "min s",
                 "rays", "on/off", "95 % interval", "min ratio"));
         StringBuilder table = new StringBuilder("without,median_cpu_s,ns_per_ray,min_cpu_s,rays,on_over_off,ci_low,ci_high,min_ratio\n");
         for (int k = 0; k < n; k++) {
             double median = median(cpu[k]);
             double[] ratio = new double[rounds];
-            for (int r = 0; r < rounds; r++) ratio[r] = reference[r] / cpu[k][r];
+            for (int r = 0; r < rounds; r++) ratio[r] = reference[k][r] / cpu[k][r];
             double[] q = medianInterval(ratio);
             double minRatio = referenceMin / min(cpu[k]);
-            String name = k < CONTROLS ? "(none) " + (k + 1) : run.get(k);
+            String name = run.get(k).isEmpty() ? "(none)" : run.get(k);
             out.append(String.format(Locale.ROOT, "%-12s %9.4f %8.1f %8.4f %11d %8.4f %7.4f–%.4f %9.4f%n", name, median,
                     median * 1e9 / rays[k], min(cpu[k]), rays[k], q[1], q[0], q[2], minRatio));
             table.append(String.format(Locale.ROOT, "%s,%.5f,%.2f,%.5f,%d,%.4f,%.4f,%.4f,%.4f%n", name, median, median * 1e9 / rays[k],
