@@ -6,9 +6,11 @@ import dev.crt.scene.Settings;
 import dev.crt.scene.Shading;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
+import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
+import java.util.Set;
 
 /**
  * The second wave's features as switches on the renderer's hot path, read once from the system
@@ -23,7 +25,7 @@ final class Features {
     /** Every switch's name and what it leaves out, in the order the documents list them. */
     static final Map<String, String> NAMES = names();
     /** The names of {@link #PROPERTY} that are switched off; read before the switches below. */
-    private static final List<String> OFF = new ArrayList<>();
+    private static final Set<String> OFF = new LinkedHashSet<>();
     /** The names given that are not switches, or null: {@link #check} reports them. */
     private static final String UNKNOWN = parse(System.getProperty(PROPERTY, ""));
 
