@@ -26,7 +26,7 @@ import java.util.Map;
  * copies' renders nearest in time) to "that one off", median over rounds, so that the load of a
  * shared machine, which drifts, cancels. A setting whose feature the scene uses is
  * refused by the renderer and reported as such. Run:
- * java [-Dcrt.assets=DIR] bench/FeatureCost.java JAR SCENE.crt WIDTH HEIGHT ROUNDS [CSV]
+ * java [-Dcrt.assets=DIR] bench/FeatureCost.java JAR SCENE.crt WIDTH HEIGHT ROUNDS [CSV|-] [ONLY,THESE,SETTINGS]
  */
 public class FeatureCost {
     /** Every setting renders at least this much CPU time before the rounds count, so that C2 has compiled each copy of the code. */
@@ -45,12 +45,14 @@ public class FeatureCost {
         Path jar = Path.of(a[0]);
         String text = Files.readString(Path.of(a[1]));
         int w = Integer.parseInt(a[2]), h = Integer.parseInt(a[3]), rounds = Integer.parseInt(a[4]);
-        Path csv = a.length > 5 ? Path.of(a[5]) : null;
+        Path csv = a.length > 5 && !a[5].equals("-") ? Path.of(a[5]) : null;
+        List<String> only = a.length > 6 ? List.of(a[6].split(",")) : null;
 
         Map<String, String> names = featureNames(jar);
         List<String> settings = new ArrayList<>();
         List<String> off = new ArrayList<>(names.keySet());
         off.add(0, "all");
+        if (only != null) off.retainAll(only);
         // The copies with every feature present spread evenly through the order of a round.
         int group = (off.size() + CONTROLS - 1) / CONTROLS;
         for (int c = 0; c < CONTROLS; c++) {
