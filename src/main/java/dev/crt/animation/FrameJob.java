@@ -2,6 +2,7 @@ package dev.crt.animation;
 
 import dev.crt.image.FrameBuffer;
 import dev.crt.image.ImageFiles;
+import dev.crt.render.FeatureSwitchedOffException;
 import dev.crt.render.RenderMonitor;
 import dev.crt.render.RenderStats;
 import dev.crt.render.Renderer;
@@ -40,7 +41,12 @@ public final class FrameJob {
         }
         Sampling.check(scene.settings());
         MemoryCheck.check(w, h, Runtime.getRuntime());
-        Renderer renderer = Renderer.prepare(scene);
+        Renderer renderer;
+        try {
+            renderer = Renderer.prepare(scene);
+        } catch (FeatureSwitchedOffException e) {
+            throw new FrameFailure(FrameFailure.Kind.SETTINGS, e.getMessage());
+        }
         FrameBuffer image = renderer.render(threads, monitor);
         long start = System.nanoTime();
         try {

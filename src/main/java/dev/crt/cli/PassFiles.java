@@ -3,6 +3,7 @@ package dev.crt.cli;
 import dev.crt.image.FrameBuffer;
 import dev.crt.image.IdColors;
 import dev.crt.image.ImageFiles;
+import dev.crt.render.FeatureSwitchedOffException;
 import dev.crt.render.Renderer;
 import dev.crt.scene.Scene;
 import java.io.IOException;
@@ -24,7 +25,12 @@ final class PassFiles {
                     "an image of %d×%d pixels is too large to render (at most %,d pixels)", w, h, FrameBuffer.MAX_PIXELS));
         }
         long start = System.nanoTime();
-        Renderer renderer = Renderer.prepare(scene);
+        Renderer renderer;
+        try {
+            renderer = Renderer.prepare(scene);
+        } catch (FeatureSwitchedOffException e) {
+            throw new CliFailure(ExitCode.USAGE, e.getMessage());
+        }
         if (pass == PassOption.Pass.ID) {
             writeIds(renderer.idPass(), w, h, target);
         } else {

@@ -61,7 +61,7 @@ final class CameraRays {
      * camera; for the 360° projections the angle one pixel spans, π/H (spherical) or 2π/W (cylindrical).
      */
     double spread(double[] d) {
-        if (projection == Projection.PERSPECTIVE) {
+        if (!Features.PROJECTIONS || projection == Projection.PERSPECTIVE) {
             double c = d[0] * fx + d[1] * fy + d[2] * fz;
             return 2 * halfHeight / height * c * c;
         }
@@ -70,7 +70,7 @@ final class CameraRays {
 
     /** The pinhole direction through sample (sx, sy) of pixel (i, j), written to {@code d[0..2]}. */
     void direction(int i, int j, double sx, double sy, double[] d) {
-        if (projection != Projection.PERSPECTIVE) {
+        if (Features.PROJECTIONS && projection != Projection.PERSPECTIVE) {
             panoramic(i, j, sx, sy, d);
             return;
         }

@@ -459,7 +459,7 @@ final class CsgSolids {
      */
     double transmittance(int tree, Ray ray, double tMax, Shapes shapes, Materials materials, LineSpan span, Scratch sc) {
         // The pair walk keeps no stretch lengths: a shadow ray that absorbs (Beer) takes the general walk.
-        return pair[tree] && !sc.absorbing ? walkPair(tree, ray, tMax, null, shapes, materials, span, sc)
+        return pair[tree] && !(Features.ABSORPTION && sc.absorbing) ? walkPair(tree, ray, tMax, null, shapes, materials, span, sc)
                 : walk(tree, ray, tMax, null, shapes, materials, span, sc);
     }
 
@@ -514,7 +514,7 @@ final class CsgSolids {
                     }
                     product *= materials.transparency(shapes.material[shape]);
                     if (product == 0) return 0;
-                    if (sc.absorbing) {
+                    if (Features.ABSORPTION && sc.absorbing) {
                         if (now) {
                             enter = sc.eventT[shown];
                             enterShape = shape;
@@ -527,7 +527,7 @@ final class CsgSolids {
             }
             i = j;
         }
-        if (hit == null && sc.absorbing) {
+        if (Features.ABSORPTION && hit == null && sc.absorbing) {
             if (!known) state = rootState(tree, sc);
             // Still inside where the segment ends: the stretch counts with the material of the
             // surface ahead, or failing one (an unbounded solid) of the one it entered by.

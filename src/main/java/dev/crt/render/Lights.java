@@ -114,17 +114,18 @@ final class Lights {
 
     /** How many samples light i takes per shading point: n² for an area light, else 1. */
     int sampleCount(int i) {
+        if (!Features.LIGHTS) return 1;
         int n = samples[i];
         return n * n;
     }
 
     /** Sample k of light i as seen from (px, py, pz), into {@code s}; area lights draw their jitter from {@code random}. */
     void sample(int i, int k, double px, double py, double pz, PixelRandom random, LightSample s) {
-        switch (kind[i]) {
-            case POINT -> PointLightSource.sample(this, i, px, py, pz, s);
-            case PARALLEL -> ParallelLightSource.sample(this, i, s);
-            case SPOT -> SpotLightSource.sample(this, i, px, py, pz, s);
-            default -> AreaLightSource.sample(this, i, k, px, py, pz, random, s);
-        }
+        byte which = kind[i];
+        // With spot and area lights switched off (Features), what is not a point light is a parallel one.
+        if (which == POINT) PointLightSource.sample(this, i, px, py, pz, s);
+        else if (which == PARALLEL || !Features.LIGHTS) ParallelLightSource.sample(this, i, s);
+        else if (which == SPOT) SpotLightSource.sample(this, i, px, py, pz, s);
+        else AreaLightSource.sample(this, i, k, px, py, pz, random, s);
     }
 }

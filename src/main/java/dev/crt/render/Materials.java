@@ -145,6 +145,14 @@ final class Materials {
         return false;
     }
 
+    /** Whether some material has a value other than 0 in {@code slot} (a flag or a texture index). */
+    boolean any(int slot) {
+        for (int k = 0; k < count; k++) {
+            if (data[k * STRIDE + slot] != 0) return true;
+        }
+        return false;
+    }
+
     /** Whether some material shades with the Gooch model. */
     boolean gooch() {
         for (int k = 0; k < count; k++) {

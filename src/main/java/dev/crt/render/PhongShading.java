@@ -79,7 +79,7 @@ final class PhongShading {
                 double att = falloff > 0 ? falloff / d2 : 1;
                 double f = s * att * weight;
                 double fr = f, fg = f, fb = f;
-                if (t.absorbing) {
+                if (Features.ABSORPTION && t.absorbing) {
                     fr *= t.shadowR;
                     fg *= t.shadowG;
                     fb *= t.shadowB;

@@ -85,16 +85,20 @@ final class PixelSampler {
         t.accG = 0;
         t.accB = 0;
         t.startPixel(i, j, seed, 0);
-        switch (kind) {
-            case GRID -> grid(i, j);
-            case JITTERED -> jittered(i, j);
-            case SOBOL -> sobol(i, j);
-            case ADAPTIVE -> pilot(i, j);
+        if (!Features.SAMPLERS) {
+            grid(i, j);
+        } else {
+            switch (kind) {
+                case GRID -> grid(i, j);
+                case JITTERED -> jittered(i, j);
+                case SOBOL -> sobol(i, j);
+                case ADAPTIVE -> pilot(i, j);
+            }
         }
         out[0] = t.accR;
         out[1] = t.accG;
         out[2] = t.accB;
-        if (original != null) truncate(out);
+        if (Features.ORIGINAL && original != null) truncate(out);
     }
 
     /**
@@ -258,7 +262,7 @@ final class PixelSampler {
         out[0] = (pilotMean[0] * (double) pilotCount + t.accR) / n;
         out[1] = (pilotMean[1] * (double) pilotCount + t.accG) / n;
         out[2] = (pilotMean[2] * (double) pilotCount + t.accB) / n;
-        if (original != null) truncate(out);
+        if (Features.ORIGINAL && original != null) truncate(out);
         return true;
     }
 
@@ -271,8 +275,8 @@ final class PixelSampler {
     private void trace(int i, int j, double sx, double sy, double w) {
         camera.direction(i, j, sx, sy, direction);
         tracer.primaryRays++;
-        if (tracer.footprints) tracer.spread = camera.spread(direction) * spreadShare;
-        if (original != null) {
+        if (Features.TEXTURES && tracer.footprints) tracer.spread = camera.spread(direction) * spreadShare;
+        if (Features.ORIGINAL && original != null) {
             original.trace(camera.px, camera.py, camera.pz, direction[0], direction[1], direction[2], depth, 0, w, w, w);
         } else {
             tracer.trace(camera.px, camera.py, camera.pz, direction[0], direction[1], direction[2], depth, w, w, w);
@@ -284,8 +288,8 @@ final class PixelSampler {
         camera.aperture.sample(u1, u2, u3, lens);
         camera.throughLens(lens[0], lens[1], origin, direction);
         tracer.primaryRays++;
-        if (tracer.footprints) tracer.spread = camera.spread(direction) * spreadShare;
-        if (original != null) {
+        if (Features.TEXTURES && tracer.footprints) tracer.spread = camera.spread(direction) * spreadShare;
+        if (Features.ORIGINAL && original != null) {
             original.trace(origin[0], origin[1], origin[2], direction[0], direction[1], direction[2], depth, 0, w, w, w);
         } else {
             tracer.trace(origin[0], origin[1], origin[2], direction[0], direction[1], direction[2], depth, w, w, w);

@@ -39,6 +39,7 @@ public final class Renderer {
         entities = scene.entities();
         geometry = new SceneGeometry(scene.entities());
         lights = new Lights(settings.lights());
+        Features.check(settings, geometry, lights);
         geometry.materials.prepare(settings.outputGamma());
         background = new BackgroundShader(settings.effectiveBackground(), settings.outputGamma(),
                 settings.shading() == Shading.ORIGINAL);
@@ -56,7 +57,10 @@ public final class Renderer {
         stats = new RenderStats(0, 0, 0, 0, 0, 0);
     }
 
-    /** Builds what rendering {@code scene} needs (BVH and flattened primitive data). */
+    /**
+     * Builds what rendering {@code scene} needs (BVH and flattened primitive data).
+     * @throws FeatureSwitchedOffException when the scene uses a feature this run leaves out (-Dcrt.without)
+     */
     public static Renderer prepare(Scene scene) {
         return new Renderer(scene);
     }

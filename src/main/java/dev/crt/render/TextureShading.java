@@ -49,7 +49,7 @@ final class TextureShading {
         snx = snx0;
         sny = sny0;
         snz = snz0;
-        boolean bump = a[m + Materials.TEX_BUMP] != 0;
+        boolean bump = Features.BUMP && a[m + Materials.TEX_BUMP] != 0;
         locate(s, surface.px - delta * gx, surface.py - delta * gy, surface.pz - delta * gz, gx, gy, gz, width);
         if (a[m + Materials.NEEDS_UV] != 0 || bump) {
             shapes.frame(s, face, surface);

@@ -127,7 +127,7 @@ final class Tracer {
         // The shading normal (interpolated on smooth meshes, else the geometric one), turned to
         // the ray's side; the geometric normal keeps deciding entering and the offsets.
         double snx = nx, sny = ny, snz = nz;
-        if (surface.shaded) {
+        if (Features.SHAPES && surface.shaded) {
             double sign = surface.snx * nx + surface.sny * ny + surface.snz * nz < 0 ? -1 : 1;
             snx = sign * surface.snx;
             sny = sign * surface.sny;
@@ -136,7 +136,7 @@ final class Tracer {
         double delta = OFFSET * Math.max(Math.max(Math.abs(px), Math.abs(py)), Math.max(Math.abs(pz), shapes.scale[s]));
         int m = shapes.material[s] * Materials.STRIDE;
         double[] mat = materials;
-        if (!entering && absorbing) {
+        if (Features.ABSORPTION && !entering && absorbing) {
             // The segment just travelled lay inside this surface's solid: Beer's law over its length.
             double t = hit.t;
             wr *= Math.exp(-mat[m + Materials.AR] * t);
@@ -148,8 +148,8 @@ final class Tracer {
         double ks = mat[m + Materials.SPECULAR];
         double cr = mat[m + Materials.R], cg = mat[m + Materials.G], cb = mat[m + Materials.B];
         double er = mat[m + Materials.ER], eg = mat[m + Materials.EG], eb = mat[m + Materials.EB];
-        double start = travelled;
-        if (mat[m + Materials.TEXTURED] != 0) {
+        double start = Features.TEXTURES ? travelled : 0;
+        if (Features.TEXTURES && mat[m + Materials.TEXTURED] != 0) {
             TextureShading ts = textured;
             // The cone's width where it meets the surface, stretched by the slant (a grazing ray covers a long strip).
             double width = spread * (start + hit.t) / Math.max(Math.abs(dn), 1e-9);
@@ -171,9 +171,9 @@ final class Tracer {
         if (local != 0) {
             // On smooth meshes the lights are looked at from the shading point and along the shading
             // normal; shadow rays still leave along the geometric normal.
-            if (gooch != null && mat[m + Materials.MODEL] == Materials.GOOCH) {
+            if (Features.GOOCH && gooch != null && mat[m + Materials.MODEL] == Materials.GOOCH) {
                 gooch.shade(m, cr, cg, cb, ks, er, eg, eb, px, py, pz, snx, sny, snz, -dx, -dy, -dz, colour);
-            } else if (surface.shaded) {
+            } else if (Features.SHAPES && surface.shaded) {
                 phong.shade(m, cr, cg, cb, ks, er, eg, eb, surface.lx, surface.ly, surface.lz, nx, ny, nz, snx, sny, snz,
                         -dx, -dy, -dz, delta, colour);
             } else {
@@ -185,18 +185,18 @@ final class Tracer {
             accB += wb * local * colour[2];
         }
         if (depth == 0 || kr == 0 && kt == 0) return;
-        travelled = start + hit.t;
+        if (Features.TEXTURES) travelled = start + hit.t;
         // The reflected and refracted rays are traced from here rather than from a helper: deep
         // mirror recursion then costs one stack frame per bounce (a glossy lobe adds one).
-        double rough = mat[m + Materials.ROUGHNESS];
-        int samples = (int) mat[m + Materials.GLOSSY_SAMPLES];
+        double rough = Features.GLOSSY ? mat[m + Materials.ROUGHNESS] : 0;
+        int samples = Features.GLOSSY ? (int) mat[m + Materials.GLOSSY_SAMPLES] : 1;
         // Mirror and refraction directions follow the shading normal; the offsets, the geometric one.
         double dDotN = dx * snx + dy * sny + dz * snz;
         double rdx = dx - 2 * dDotN * snx, rdy = dy - 2 * dDotN * sny, rdz = dz - 2 * dDotN * snz;
-        if (kt > 0 && mat[m + Materials.FRESNEL] != 0) {
+        if (Features.FRESNEL && kt > 0 && mat[m + Materials.FRESNEL] != 0) {
             fresnel(px, py, pz, dx, dy, dz, nx, ny, nz, snx, sny, snz, rdx, rdy, rdz, entering, delta, depth, kr, kt,
                     mat[m + Materials.IOR], rough, samples, wr, wg, wb);
-            travelled = start;
+            if (Features.TEXTURES) travelled = start;
             return;
         }
         if (kr > 0) {
@@ -230,7 +230,7 @@ final class Tracer {
                 }
             }
         }
-        travelled = start;
+        if (Features.TEXTURES) travelled = start;
     }
 
     /**
@@ -328,19 +328,19 @@ final class Tracer {
     double shadow(LightSample ls, double px, double py, double pz, double nx, double ny, double nz, double side, int light) {
         double ox = px + side * nx, oy = py + side * ny, oz = pz + side * nz;
         if (ls.finite) return shadowTo(ox, oy, oz, ls.tx, ls.ty, ls.tz, side, light);
-        if (absorbing) {
+        if (Features.ABSORPTION && absorbing) {
             depthR = 0;
             depthG = 0;
             depthB = 0;
         }
         double s = transmittance(ox, oy, oz, ls.wx, ls.wy, ls.wz, Double.POSITIVE_INFINITY, light);
-        if (absorbing) absorbed();
+        if (Features.ABSORPTION && absorbing) absorbed();
         return s;
     }
 
     /** The shadow factor of the segment from o (already moved off the surface by {@code side}) to the light point q. */
     double shadowTo(double ox, double oy, double oz, double qx, double qy, double qz, double side, int light) {
-        if (absorbing) {
+        if (Features.ABSORPTION && absorbing) {
             depthR = 0;
             depthG = 0;
             depthB = 0;
@@ -349,7 +349,7 @@ final class Tracer {
         double reach = Math.sqrt(sx * sx + sy * sy + sz * sz);
         double margin = Math.max(Math.abs(side), OFFSET * Math.max(Math.max(Math.abs(qx), Math.abs(qy)), Math.abs(qz)));
         double s = reach > margin ? transmittance(ox, oy, oz, sx / reach, sy / reach, sz / reach, reach - margin, light) : 1;
-        if (absorbing) absorbed();
+        if (Features.ABSORPTION && absorbing) absorbed();
         return s;
     }
 
@@ -361,8 +361,8 @@ final class Tracer {
 
     /** Seeds the light generator for pixel (i, j) and pass {@code pass}, when some light needs one. */
     void startPixel(int i, int j, long seed, int pass) {
-        if (lights.random) lightRandom.seed(i, j, seed ^ (LIGHT_STREAM + pass));
-        if (glossy) glossRandom.seed(i, j, seed ^ (GLOSS_STREAM + pass));
+        if (Features.LIGHTS && lights.random) lightRandom.seed(i, j, seed ^ (LIGHT_STREAM + pass));
+        if (Features.GLOSSY && glossy) glossRandom.seed(i, j, seed ^ (GLOSS_STREAM + pass));
     }
 
     /**
@@ -469,7 +469,7 @@ final class Tracer {
 
     private double itemTransmittance(int item, double tMax) {
         if (item < 0) {
-            if (!absorbing) return csg.transmittance(-item - 1, ray, tMax, shapes, geometry.materials, span, csgScratch);
+            if (!Features.ABSORPTION || !absorbing) return csg.transmittance(-item - 1, ray, tMax, shapes, geometry.materials, span, csgScratch);
             CsgSolids.Scratch sc = csgScratch;
             sc.depthR = 0;
             sc.depthG = 0;
@@ -481,7 +481,7 @@ final class Tracer {
             return kt;
         }
         int m = shapes.material[item] * Materials.STRIDE;
-        if (materials[m + Materials.TRANSPARENCY] == 0 && materials[m + Materials.TEX_TRANSPARENCY] == 0) {
+        if (materials[m + Materials.TRANSPARENCY] == 0 && (!Features.TEXTURES || materials[m + Materials.TEX_TRANSPARENCY] == 0)) {
             return shapes.anyHit(item, ray, tMax, span) ? 0 : 1;
         }
         if (!shapes.span(item, ray, span)) return 1;
@@ -491,9 +491,9 @@ final class Tracer {
             if (span.tOut[i] > 0 && span.tOut[i] < tMax && !span.surface) crossings++;
         }
         if (crossings == 0) return 1;
-        if (materials[m + Materials.TEX_TRANSPARENCY] != 0) return texturedTransmittance(item, m, tMax);
+        if (Features.TEXTURES && materials[m + Materials.TEX_TRANSPARENCY] != 0) return texturedTransmittance(item, m, tMax);
         double kt = materials[m + Materials.TRANSPARENCY];
-        if (absorbing && kt != 0 && !span.surface) absorb(m, tMax);
+        if (Features.ABSORPTION && absorbing && kt != 0 && !span.surface) absorb(m, tMax);
         double product = kt;
         for (int k = 1; k < crossings; k++) product *= kt;
         return product;
