@@ -10,8 +10,9 @@ import dev.crt.scene.Camera;
  * draw them, the lights as uniform arrays, and what the background and camera need.
  *
  * <p>Layout of an entity at texel {@code o}: {@code o} = (leaves, program length, entity index,
- * scale), {@code o+1} = (bounds min, unbounded flag), {@code o+2} = (bounds max, 0), then one
- * texel per program step (opcode, leaf, 0, 0) in postfix order, then {@link #LEAF_TEXELS} texels
+ * scale), {@code o+1} = (bounds min, 0; or 1 when unbounded, 2 for a plane alone), {@code o+2} =
+ * (bounds max, 0; the plane's world normal and offset for a plane alone), then one
+ * texel per program step (opcode, leaf, truth table entries, truth table entries) in postfix order, then {@link #LEAF_TEXELS} texels
  * per primitive: (kind, parameters), three rows of the world-to-local matrix (a plane keeps its
  * world normal and offset in the first), local box min and max (a cone: its length, then 0),
  * (colour, diffuse), (specular, shininess, transparency, reflectivity), (emission, 0).
@@ -33,6 +34,12 @@ public final class GpuScene {
     public static final int SPHERE = 0, BOX = 1, PLANE = 2, EMPTY = 3, CONE = 4, TORUS = 5, MESH = 6;
     /** Triangles up to which a mesh is ray-cast in the shader (inside CSG, and for shadow rays). */
     public static final int MESH_CAST_LIMIT = 256;
+    /**
+     * Entities of up to this many primitives also carry their CSG program as a truth table (2^n
+     * entries, sixteen to a float in the z and w of the program texels, which a program of 2n − 1
+     * steps has room for).
+     */
+    public static final int TABLE_LEAVES = 8;
     /** Program opcodes as the shader reads them. */
     public static final int OP_LEAF = 0, OP_UNION = 1, OP_INTERSECTION = 2, OP_DIFFERENCE = 3;
     /** The shader's limits: primitives per top-level entity (a 32-bit inside mask) and lights. */
@@ -55,6 +62,10 @@ public final class GpuScene {
     final int boundedPrimitives;
     /** Entities with infinite bounds, drawn by a full-screen pass. */
     final int[] unboundedOffsets;
+    /** How many of the unbounded entities, listed first, are a single primitive. */
+    final int unboundedPrimitives;
+    /** Whether every entity has its CSG truth table in its program texels (none has more than {@link #TABLE_LEAVES} primitives). */
+    final boolean tables;
     /**
      * Per light four vec4: (kind, position or direction towards the light), (colour, ambient),
      * (falloff, cos angle, cos innerangle, 0), (spot axis or area normal, 0).
@@ -80,7 +91,7 @@ public final class GpuScene {
     final float[] meshMatrices;
 
     GpuScene(float[] data, int texels, int[] entityOffset, Aabb[] entityBounds, int[] boundedOffsets,
-            float[] boundedBoxes, int boundedPrimitives, int[] unboundedOffsets, float[] lights, int lightCount, Background background,
+            float[] boundedBoxes, int boundedPrimitives, int[] unboundedOffsets, int unboundedPrimitives, boolean tables, float[] lights, int lightCount, Background background,
             double gamma, Camera camera, Aabb bounds, int kinds, java.util.List<dev.crt.scene.MeshData> meshes,
             int meshVertexTexels, int meshIndexCount, int[] meshInstances, float[] meshMatrices) {
         this.data = data;
@@ -91,6 +102,8 @@ public final class GpuScene {
         this.boundedBoxes = boundedBoxes;
         this.boundedPrimitives = boundedPrimitives;
         this.unboundedOffsets = unboundedOffsets;
+        this.unboundedPrimitives = unboundedPrimitives;
+        this.tables = tables;
         this.lights = lights;
         this.lightCount = lightCount;
         this.background = background;

@@ -71,7 +71,7 @@ public final class LiveRenderer implements AutoCloseable {
         glVertexAttribPointer(0, 3, GL_FLOAT, false, 12, 0);
         instanceVbo = glGenBuffers();
         glBindBuffer(GL_ARRAY_BUFFER, instanceVbo);
-        instanceAttributes();
+        instanceAttributes(0);
 
         csgVao = glGenVertexArrays();
         glBindVertexArray(csgVao);
@@ -80,13 +80,13 @@ public final class LiveRenderer implements AutoCloseable {
         glVertexAttribPointer(0, 3, GL_FLOAT, false, 12, 0);
         csgInstanceVbo = glGenBuffers();
         glBindBuffer(GL_ARRAY_BUFFER, csgInstanceVbo);
-        instanceAttributes();
+        instanceAttributes(0);
 
         fullVao = glGenVertexArrays();
         glBindVertexArray(fullVao);
         fullInstanceVbo = glGenBuffers();
         glBindBuffer(GL_ARRAY_BUFFER, fullInstanceVbo);
-        instanceAttributes();
+        instanceAttributes(0);
         glBindVertexArray(0);
 
         sceneBuffer = glGenBuffers();
@@ -115,11 +115,12 @@ public final class LiveRenderer implements AutoCloseable {
         check("creating the renderer");
     }
 
-    /** The shaders' defines: the background kind, and the cone and torus code only where the scene has them. */
+    /** The shaders' defines: the background kind, the cone, torus and mesh code only where the scene has them, CSG by truth tables where every entity has one. */
     private String header(int backgroundKind) {
         return "#version 330 core\n#define BACKGROUND_KIND " + backgroundKind + "\n"
                 + ((scene.kinds & 1 << GpuScene.CONE) != 0 ? "#define HAS_CONE\n" : "")
                 + ((scene.kinds & 1 << GpuScene.TORUS) != 0 ? "#define HAS_TORUS\n" : "")
+                + (scene.tables ? "#define CSG_TABLE\n" : "")
                 + ((scene.kinds & 1 << GpuScene.MESH) != 0
                         ? "#define HAS_MESH\n#define MESH_CAST_LIMIT " + GpuScene.MESH_CAST_LIMIT + "\n" : "");
     }
@@ -152,16 +153,16 @@ public final class LiveRenderer implements AutoCloseable {
         throw new UnsupportedSceneException("the live view cannot show a " + bg.getClass().getSimpleName() + " yet");
     }
 
-    /** Per instance: box min (3 floats), box max (3 floats), header offset (1 int); 28 bytes. */
-    private static void instanceAttributes() {
+    /** Per instance, from byte {@code from} of the bound buffer: box min (3 floats), box max (3 floats), header offset (1 int); 28 bytes. */
+    private static void instanceAttributes(long from) {
         glEnableVertexAttribArray(1);
-        glVertexAttribPointer(1, 3, GL_FLOAT, false, 28, 0);
+        glVertexAttribPointer(1, 3, GL_FLOAT, false, 28, from);
         glVertexAttribDivisor(1, 1);
         glEnableVertexAttribArray(2);
-        glVertexAttribPointer(2, 3, GL_FLOAT, false, 28, 12);
+        glVertexAttribPointer(2, 3, GL_FLOAT, false, 28, from + 12);
         glVertexAttribDivisor(2, 1);
         glEnableVertexAttribArray(3);
-        glVertexAttribIPointer(3, 1, GL_INT, 28, 24);
+        glVertexAttribIPointer(3, 1, GL_INT, 28, from + 24);
         glVertexAttribDivisor(3, 1);
     }
 
@@ -425,10 +426,21 @@ public final class LiveRenderer implements AutoCloseable {
             }
             glDisable(GL_CULL_FACE);
         }
-        if (scene.unboundedOffsets.length > 0) {
+        int unboundedPrimitives = scene.unboundedPrimitives, unboundedCsg = scene.unboundedOffsets.length - unboundedPrimitives;
+        if (unboundedPrimitives > 0) {
+            useGeometryProgram(geometryProgram(true), view, x, glY, w, h, overlay, true);
+            glBindVertexArray(fullVao);
+            glBindBuffer(GL_ARRAY_BUFFER, fullInstanceVbo);
+            instanceAttributes(0);
+            glDrawArraysInstanced(GL_TRIANGLES, 0, 3, unboundedPrimitives);
+        }
+        if (unboundedCsg > 0) {
+            // The CSG ones follow in the same instance buffer (no base instance in GL 3.3: the attributes start there).
             useGeometryProgram(geometryProgram(false), view, x, glY, w, h, overlay, true);
             glBindVertexArray(fullVao);
-            glDrawArraysInstanced(GL_TRIANGLES, 0, 3, scene.unboundedOffsets.length);
+            glBindBuffer(GL_ARRAY_BUFFER, fullInstanceVbo);
+            instanceAttributes(28L * unboundedPrimitives);
+            glDrawArraysInstanced(GL_TRIANGLES, 0, 3, unboundedCsg);
         }
         int meshes = scene.meshInstances.length / GpuScene.MESH_INSTANCE_INTS;
         if (meshes > 0) {

@@ -64,8 +64,9 @@ public final class SceneConverter {
         int[] bounded = new int[n];
         float[] boxes = new float[6 * n];
         int nc = 0;
+        // Unbounded entities likewise: one-primitive ones (drawn without the CSG walk) first.
         int[] unbounded = new int[n];
-        int nb = 0, nu = 0;
+        int nb = 0, nu = 0, nuc = 0;
         Aabb all = Aabb.EMPTY;
         for (int i = 0; i < n; i++) {
             Entity e = entities.get(i);
@@ -83,8 +84,10 @@ public final class SceneConverter {
                 bounded[at] = offsets[i];
                 put(boxes, 6 * at, b);
                 all = all.union(b);
-            } else {
+            } else if (e instanceof Primitive) {
                 unbounded[nu++] = offsets[i];
+            } else {
+                unbounded[n - 1 - nuc++] = offsets[i];
             }
         }
         List<Light> sceneLights = scene.settings().lights();
@@ -102,7 +105,9 @@ public final class SceneConverter {
             boundedAll[nb + k] = bounded[n - nc + k];
             System.arraycopy(boxes, 6 * (n - nc + k), boxesAll, 6 * (nb + k), 6);
         }
-        return new GpuScene(data, size / 4, offsets, bounds, boundedAll, boxesAll, nb, Arrays.copyOf(unbounded, nu), lights, sceneLights.size(),
+        int[] unboundedAll = Arrays.copyOf(unbounded, nu + nuc);
+        System.arraycopy(unbounded, n - nuc, unboundedAll, nu, nuc);
+        return new GpuScene(data, size / 4, offsets, bounds, boundedAll, boxesAll, nb, unboundedAll, nu, tables, lights, sceneLights.size(),
                 scene.settings().background(), scene.settings().gamma(), scene.settings().camera(), all, kinds,
                 meshes, meshVertexTexels, meshIndexCount,
                 Arrays.copyOf(meshInstances, GpuScene.MESH_INSTANCE_INTS * meshInstanceCount),
@@ -182,12 +187,15 @@ public final class SceneConverter {
                     + " primitives; the entity at " + e.span() + " has " + leafCount);
         }
         reserve(4 * steps);
+        int programAt = size;
         for (int s = 0; s < steps; s++) {
             data[size++] = program[2 * s];
             data[size++] = program[2 * s + 1];
             data[size++] = 0;
             data[size++] = 0;
         }
+        if (leafCount <= GpuScene.TABLE_LEAVES) truthTable(programAt);
+        else tables = false;
         Aabb b = leaves(e, Transform.IDENTITY);
         double scale = b.isFinite() && !b.isEmpty()
                 ? Math.max(maxAbs(b.min()), maxAbs(b.max())) : 1;
@@ -204,6 +212,11 @@ public final class SceneConverter {
         data[header + 9] = finite ? (float) b.max().y() : 1e30f;
         data[header + 10] = finite ? (float) b.max().z() : 1e30f;
         data[header + 11] = 0;
+        if (e instanceof Plane) {
+            // A plane alone: its (normal, offset) in place of the bounds, so a shadow ray's bounds test is its crossing.
+            System.arraycopy(data, programAt + 4 * steps + 4, data, header + 8, 4);
+            data[header + 7] = 2;
+        }
         return b;
     }
 
@@ -226,6 +239,43 @@ public final class SceneConverter {
         } else {
             throw new UnsupportedSceneException("the live view cannot draw a " + kindName(e) + " yet");
         }
+    }
+
+    /** Whether every entity so far has its truth table written (at most {@link GpuScene#TABLE_LEAVES} primitives). */
+    private boolean tables = true;
+
+    /**
+     * Writes the entity's CSG program as a truth table over its primitives: entry m tells whether a
+     * point inside exactly the primitives of bit mask m is inside the entity. Sixteen entries per
+     * float (exact as an integer), in the z and w of the program's texels from {@code at}: the
+     * shader reads one texel to tell inside from outside instead of running the program.
+     */
+    private void truthTable(int at) {
+        int entries = 1 << leafCount;
+        for (int chunk = 0; chunk * 16 < entries; chunk++) {
+            int bits = 0;
+            for (int k = 0; k < 16 && chunk * 16 + k < entries; k++) {
+                if (inside(chunk * 16 + k)) bits |= 1 << k;
+            }
+            data[at + 4 * (chunk >> 1) + 2 + (chunk & 1)] = bits;
+        }
+    }
+
+    /** The program run on the set of primitives of bit mask {@code mask}, as the shader's program walk runs it. */
+    private boolean inside(int mask) {
+        long stack = 0;
+        for (int s = 0; s < steps; s++) {
+            int op = program[2 * s];
+            if (op == GpuScene.OP_LEAF) {
+                stack = stack << 1 | (mask >> program[2 * s + 1] & 1);
+            } else {
+                long b = stack & 1, a = stack >> 1 & 1;
+                stack >>= 2;
+                long r = op == GpuScene.OP_UNION ? a | b : op == GpuScene.OP_INTERSECTION ? a & b : a & (b ^ 1);
+                stack = stack << 1 | r;
+            }
+        }
+        return (stack & 1) != 0;
     }
 
     private void step(int opcode, int leaf) {

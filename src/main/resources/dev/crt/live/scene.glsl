@@ -348,6 +348,13 @@ bool leafSpan(int L, vec3 ro, vec3 rd, out float a, out float b) {
 }
 
 bool inside(int program, int steps, uint mask) {
+#ifdef CSG_TABLE
+    // The program's truth table (SceneConverter.truthTable): one texel read instead of a loop over the program.
+    uint chunk = mask >> 4u;
+    vec4 entries = T(program + int(chunk >> 1u));
+    uint bits = uint((chunk & 1u) == 0u ? entries.z : entries.w);
+    return ((bits >> (mask & 15u)) & 1u) != 0u;
+#else
     uint stack = 0u;
     for (int s = 0; s < steps; s++) {
         vec4 p = T(program + s);
@@ -362,6 +369,7 @@ bool inside(int program, int steps, uint mask) {
         }
     }
     return (stack & 1u) != 0u;
+#endif
 }
 
 // First boundary of the entity at o with tMin < t < tMax (transmittance = false: returns 1 on a hit
@@ -520,12 +528,15 @@ vec3 normalAt(int L, int face, vec3 p) {
     return world;
 }
 
+// Whether the segment from ro to ro + tMax rd may meet a boundary of the entity at o: its bounds;
+// for an entity that is one plane, the plane itself (the walk counts its crossing there). Both
+// are computed and one kept: a branch costs every pixel its both sides on llvmpipe anyway.
 bool boxCrossed(int o, vec3 ro, vec3 rd, float tMax) {
     vec4 lo = T(o + 1), hi = T(o + 2);
-    if (lo.w != 0.0) return true;
     vec3 inv = 1.0 / rd;
     vec3 t0 = (lo.xyz - ro) * inv, t1 = (hi.xyz - ro) * inv;
     vec3 tn = min(t0, t1), tf = max(t0, t1);
     float a = max(max(tn.x, tn.y), tn.z), b = min(min(tf.x, tf.y), tf.z);
-    return !(a > b) && b > 0.0 && a < tMax;
+    float tp = (hi.w - dot(hi.xyz, ro)) / dot(hi.xyz, rd);
+    return lo.w == 0.0 ? !(a > b) && b > 0.0 && a < tMax : lo.w == 2.0 ? tp > 0.0 && tp < tMax : true;
 }
