@@ -42,8 +42,8 @@ public final class LiveRenderer implements AutoCloseable {
     private final java.util.Map<String, Integer> shadePrograms = new java.util.HashMap<>();
     private final String common;
     private final int cubeVao, cubeVbo, instanceVbo, csgVao, csgInstanceVbo, fullVao, fullInstanceVbo;
-    /** Proxy boxes of one-primitive entities (cubeVao) and of CSG entities (csgVao). */
-    private int primitiveInstances, csgInstances;
+    /** Proxy boxes of CSG entities (csgVao); those of one-primitive entities (cubeVao) are counted by kind. */
+    private int csgInstances;
     private final int sceneBuffer, sceneTexture, directoryBuffer, directoryTexture;
     /** The meshes' vertices and triangles: vertex and index buffers of the rasterised draws and texture buffers of the shaders. */
     private final int meshVao, meshVertexBuffer, meshIndexBuffer, meshVertexTexture, meshIndexTexture;
@@ -125,11 +125,11 @@ public final class LiveRenderer implements AutoCloseable {
                         ? "#define HAS_MESH\n#define MESH_CAST_LIMIT " + GpuScene.MESH_CAST_LIMIT + "\n" : "");
     }
 
-    /** The geometry program for one-primitive entities ({@code primitives}) or for CSG entities. */
-    private int geometryProgram(boolean primitives) {
-        String defines = header(0) + (primitives ? "#define PRIMITIVES\n" : "");
+    /** The geometry program for one-primitive entities of {@code kind} ({@code primitives}) or for CSG entities. */
+    private int geometryProgram(boolean primitives, int kind) {
+        String defines = header(0) + (primitives ? "#define PRIMITIVES\n#define ONE_KIND " + kind + "\n" : "");
         return geometryPrograms.computeIfAbsent(defines,
-                d -> program(resource("entity.vert"), d + common + resource("entity.frag")));
+                d -> program(d + resource("entity.vert"), d + common + resource("entity.frag")));
     }
 
     private int meshProgram() {
@@ -224,16 +224,19 @@ public final class LiveRenderer implements AutoCloseable {
         glTexBuffer(GL_TEXTURE_BUFFER, GL_R32I, directoryBuffer);
 
         glBindBuffer(GL_ARRAY_BUFFER, instanceVbo);
-        glBufferData(GL_ARRAY_BUFFER, instances(next.boundedBoxes, next.boundedOffsets, 0, next.boundedPrimitives),
-                GL_DYNAMIC_DRAW);
+        glBufferData(GL_ARRAY_BUFFER, instancesByKind(next, next.boundedBoxes, next.boundedOffsets, next.boundedPrimitives,
+                boundedKindStart), GL_DYNAMIC_DRAW);
         glBindBuffer(GL_ARRAY_BUFFER, csgInstanceVbo);
         glBufferData(GL_ARRAY_BUFFER, instances(next.boundedBoxes, next.boundedOffsets, next.boundedPrimitives,
                 next.boundedOffsets.length), GL_DYNAMIC_DRAW);
-        primitiveInstances = next.boundedPrimitives;
         csgInstances = next.boundedOffsets.length - next.boundedPrimitives;
         glBindBuffer(GL_ARRAY_BUFFER, fullInstanceVbo);
-        glBufferData(GL_ARRAY_BUFFER, instances(new float[6 * next.unboundedOffsets.length], next.unboundedOffsets,
-                0, next.unboundedOffsets.length), GL_DYNAMIC_DRAW);
+        float[] noBoxes = new float[6 * next.unboundedOffsets.length];
+        int nu = next.unboundedOffsets.length, nup = next.unboundedPrimitives;
+        ByteBuffer unbounded = BufferUtils.createByteBuffer(Math.max(28, 28 * nu));
+        unbounded.put(instancesByKind(next, noBoxes, next.unboundedOffsets, nup, unboundedKindStart).limit(28 * nup));
+        unbounded.put(instances(noBoxes, next.unboundedOffsets, nup, nu).limit(28 * (nu - nup)));
+        glBufferData(GL_ARRAY_BUFFER, unbounded.position(0).limit(unbounded.capacity()), GL_DYNAMIC_DRAW);
 
         if (!sameMeshes(next.meshes, uploadedMeshes)) {
             uploadMeshes(next);
@@ -283,6 +286,33 @@ public final class LiveRenderer implements AutoCloseable {
 
     /** How many floats the last {@link #setScene} sent to the GPU (for tests and benchmarks). */
     public long lastUploadFloats() { return lastUploadFloats; }
+
+    /**
+     * Where each primitive kind's instances start among the one-primitive entities, bounded and
+     * unbounded (entry {@code GpuScene.KINDS} is the end): each kind is drawn by a program with only
+     * its own intersection code, since llvmpipe runs every kind's code for every pixel otherwise.
+     */
+    private final int[] boundedKindStart = new int[KINDS + 1], unboundedKindStart = new int[KINDS + 1];
+    private static final int KINDS = GpuScene.MESH + 1;
+
+    /** Instance records of the one-primitive entities [0, count) ordered by kind, the kinds' starts into {@code start}. */
+    private static ByteBuffer instancesByKind(GpuScene g, float[] boxes, int[] offsets, int count, int[] start) {
+        java.util.Arrays.fill(start, 0);
+        int[] kind = new int[count];
+        for (int i = 0; i < count; i++) {
+            kind[i] = (int) g.data[4 * (offsets[i] + GpuScene.HEADER_TEXELS + 1)];
+            start[kind[i] + 1]++;
+        }
+        for (int k = 0; k < KINDS; k++) start[k + 1] += start[k];
+        int[] next = java.util.Arrays.copyOf(start, KINDS);
+        ByteBuffer b = BufferUtils.createByteBuffer(Math.max(28, 28 * count));
+        for (int i = 0; i < count; i++) {
+            b.position(28 * next[kind[i]]++);
+            for (int k = 0; k < 6; k++) b.putFloat(boxes[6 * i + k]);
+            b.putInt(offsets[i]);
+        }
+        return b.position(0).limit(Math.max(28, 28 * count));
+    }
 
     /** Instance records (box min, box max, header offset) of entries [from, to). */
     private static ByteBuffer instances(float[] boxes, int[] offsets, int from, int to) {
@@ -414,29 +444,35 @@ public final class LiveRenderer implements AutoCloseable {
             glEnable(GL_CULL_FACE);
             glCullFace(GL_FRONT);
             glFrontFace(frontFace(view));
-            if (primitiveInstances > 0) {
-                useGeometryProgram(geometryProgram(true), view, x, glY, w, h, overlay, false);
-                glBindVertexArray(cubeVao);
-                glDrawArraysInstanced(GL_TRIANGLES, 0, 36, primitiveInstances);
+            glBindVertexArray(cubeVao);
+            glBindBuffer(GL_ARRAY_BUFFER, instanceVbo);
+            for (int k = 0; k < KINDS; k++) {
+                int from = boundedKindStart[k], count = boundedKindStart[k + 1] - from;
+                if (count == 0) continue;
+                useGeometryProgram(geometryProgram(true, k), view, x, glY, w, h, overlay, false);
+                instanceAttributes(28L * from);
+                glDrawArraysInstanced(GL_TRIANGLES, 0, 36, count);
             }
             if (csgInstances > 0) {
-                useGeometryProgram(geometryProgram(false), view, x, glY, w, h, overlay, false);
+                useGeometryProgram(geometryProgram(false, -1), view, x, glY, w, h, overlay, false);
                 glBindVertexArray(csgVao);
                 glDrawArraysInstanced(GL_TRIANGLES, 0, 36, csgInstances);
             }
             glDisable(GL_CULL_FACE);
         }
         int unboundedPrimitives = scene.unboundedPrimitives, unboundedCsg = scene.unboundedOffsets.length - unboundedPrimitives;
-        if (unboundedPrimitives > 0) {
-            useGeometryProgram(geometryProgram(true), view, x, glY, w, h, overlay, true);
-            glBindVertexArray(fullVao);
-            glBindBuffer(GL_ARRAY_BUFFER, fullInstanceVbo);
-            instanceAttributes(0);
-            glDrawArraysInstanced(GL_TRIANGLES, 0, 3, unboundedPrimitives);
+        glBindVertexArray(fullVao);
+        glBindBuffer(GL_ARRAY_BUFFER, fullInstanceVbo);
+        for (int k = 0; k < KINDS; k++) {
+            int from = unboundedKindStart[k], count = unboundedKindStart[k + 1] - from;
+            if (count == 0) continue;
+            useGeometryProgram(geometryProgram(true, k), view, x, glY, w, h, overlay, true);
+            instanceAttributes(28L * from);
+            glDrawArraysInstanced(GL_TRIANGLES, 0, 3, count);
         }
         if (unboundedCsg > 0) {
             // The CSG ones follow in the same instance buffer (no base instance in GL 3.3: the attributes start there).
-            useGeometryProgram(geometryProgram(false), view, x, glY, w, h, overlay, true);
+            useGeometryProgram(geometryProgram(false, -1), view, x, glY, w, h, overlay, true);
             glBindVertexArray(fullVao);
             glBindBuffer(GL_ARRAY_BUFFER, fullInstanceVbo);
             instanceAttributes(28L * unboundedPrimitives);

@@ -298,15 +298,21 @@ vec3 meshNormal(int L, int f, vec3 q) {
 }
 #endif
 
-bool leafSpan(int L, vec3 ro, vec3 rd, out float a, out float b) {
+// The interval along the ray inside the primitive of texels hd, r0 to r2 (the matrix rows, or a
+// plane) and lo, hi (a box's corners), false if none; a torus's second interval in span2A, span2B.
+bool span(vec4 hd, vec4 r0, vec4 r1, vec4 r2, vec4 lo4, vec4 hi4, vec3 ro, vec3 rd, out float a, out float b) {
 #ifdef HAS_TORUS
     span2A = INF;
     span2B = INF;
 #endif
-    vec4 hd = T(L);
+#ifdef ONE_KIND
+    // A program for one kind of one-primitive entity: the other kinds' code folds away.
+    const int kind = ONE_KIND;
+#else
     int kind = int(hd.x);
+#endif
     if (kind == PLANE) {
-        vec4 pl = T(L + 1);
+        vec4 pl = r0;
         float dn = dot(pl.xyz, rd), on = dot(pl.xyz, ro);
         if (dn == 0.0) { a = -INF; b = INF; return on <= pl.w; }
         float t = (pl.w - on) / dn;
@@ -314,7 +320,6 @@ bool leafSpan(int L, vec3 ro, vec3 rd, out float a, out float b) {
         return true;
     }
     if (kind == EMPTY) return false;
-    vec4 r0 = T(L + 1), r1 = T(L + 2), r2 = T(L + 3);
     vec3 o = vec3(dot(r0.xyz, ro) + r0.w, dot(r1.xyz, ro) + r1.w, dot(r2.xyz, ro) + r2.w);
     vec3 d = vec3(dot(r0.xyz, rd), dot(r1.xyz, rd), dot(r2.xyz, rd));
 #ifdef HAS_CONE
@@ -336,7 +341,7 @@ bool leafSpan(int L, vec3 ro, vec3 rd, out float a, out float b) {
         b = max(t1, t2);
         return true;
     }
-    vec3 lo = T(L + 4).xyz, hi = T(L + 5).xyz;
+    vec3 lo = lo4.xyz, hi = hi4.xyz;
     // A ray parallel to a slab: a tiny component instead of 0 keeps the slab test branch-free (a
     // branch costs every pixel on llvmpipe) and gives ±huge distances of the right sign.
     vec3 inv = 1.0 / mix(d, vec3(1e-30), equal(d, vec3(0.0)));
@@ -345,6 +350,11 @@ bool leafSpan(int L, vec3 ro, vec3 rd, out float a, out float b) {
     a = max(max(tn.x, tn.y), tn.z);
     b = min(min(tf.x, tf.y), tf.z);
     return a <= b;
+}
+
+// The interval of primitive L along the ray (see span).
+bool leafSpan(int L, vec3 ro, vec3 rd, out float a, out float b) {
+    return span(T(L), T(L + 1), T(L + 2), T(L + 3), T(L + 4), T(L + 5), ro, rd, a, b);
 }
 
 bool inside(int program, int steps, uint mask) {
