@@ -66,6 +66,8 @@ public final class GpuScene {
     final int unboundedPrimitives;
     /** Whether every entity has its CSG truth table in its program texels (none has more than {@link #TABLE_LEAVES} primitives). */
     final boolean tables;
+    /** Whether some material reflects or is transparent (its shading looks the background up). */
+    final boolean seesBackground;
     /**
      * Per light four vec4: (kind, position or direction towards the light), (colour, ambient),
      * (falloff, cos angle, cos innerangle, 0), (spot axis or area normal, 0).
@@ -91,7 +93,8 @@ public final class GpuScene {
     final float[] meshMatrices;
 
     GpuScene(float[] data, int texels, int[] entityOffset, Aabb[] entityBounds, int[] boundedOffsets,
-            float[] boundedBoxes, int boundedPrimitives, int[] unboundedOffsets, int unboundedPrimitives, boolean tables, float[] lights, int lightCount, Background background,
+            float[] boundedBoxes, int boundedPrimitives, int[] unboundedOffsets, int unboundedPrimitives, boolean tables, boolean seesBackground,
+            float[] lights, int lightCount, Background background,
             double gamma, Camera camera, Aabb bounds, int kinds, java.util.List<dev.crt.scene.MeshData> meshes,
             int meshVertexTexels, int meshIndexCount, int[] meshInstances, float[] meshMatrices) {
         this.data = data;
@@ -104,6 +107,7 @@ public final class GpuScene {
         this.unboundedOffsets = unboundedOffsets;
         this.unboundedPrimitives = unboundedPrimitives;
         this.tables = tables;
+        this.seesBackground = seesBackground;
         this.lights = lights;
         this.lightCount = lightCount;
         this.background = background;

@@ -115,12 +115,18 @@ public final class LiveRenderer implements AutoCloseable {
         check("creating the renderer");
     }
 
-    /** The shaders' defines: the background kind, the cone, torus and mesh code only where the scene has them, CSG by truth tables where every entity has one. */
+    /**
+     * The shaders' defines: the background kind, the cone, torus and mesh code only where the scene
+     * has them, CSG by truth tables where every entity has one, the background seen in mirrors and
+     * glass only where there are some, gamma only when it is not 1.
+     */
     private String header(int backgroundKind) {
         return "#version 330 core\n#define BACKGROUND_KIND " + backgroundKind + "\n"
                 + ((scene.kinds & 1 << GpuScene.CONE) != 0 ? "#define HAS_CONE\n" : "")
                 + ((scene.kinds & 1 << GpuScene.TORUS) != 0 ? "#define HAS_TORUS\n" : "")
                 + (scene.tables ? "#define CSG_TABLE\n" : "")
+                + (scene.seesBackground ? "#define SEES_BACKGROUND\n" : "")
+                + (scene.gamma == 1 ? "#define LINEAR_OUTPUT\n" : "")
                 + ((scene.kinds & 1 << GpuScene.MESH) != 0
                         ? "#define HAS_MESH\n#define MESH_CAST_LIMIT " + GpuScene.MESH_CAST_LIMIT + "\n" : "");
     }

@@ -107,7 +107,7 @@ public final class SceneConverter {
         }
         int[] unboundedAll = Arrays.copyOf(unbounded, nu + nuc);
         System.arraycopy(unbounded, n - nuc, unboundedAll, nu, nuc);
-        return new GpuScene(data, size / 4, offsets, bounds, boundedAll, boxesAll, nb, unboundedAll, nu, tables, lights, sceneLights.size(),
+        return new GpuScene(data, size / 4, offsets, bounds, boundedAll, boxesAll, nb, unboundedAll, nu, tables, seesBackground, lights, sceneLights.size(),
                 scene.settings().background(), scene.settings().gamma(), scene.settings().camera(), all, kinds,
                 meshes, meshVertexTexels, meshIndexCount,
                 Arrays.copyOf(meshInstances, GpuScene.MESH_INSTANCE_INTS * meshInstanceCount),
@@ -240,6 +240,9 @@ public final class SceneConverter {
             throw new UnsupportedSceneException("the live view cannot draw a " + kindName(e) + " yet");
         }
     }
+
+    /** Whether a material so far reflects or lets light through (the shading then looks the background up in those directions). */
+    private boolean seesBackground;
 
     /** Whether every entity so far has its truth table written (at most {@link GpuScene#TABLE_LEAVES} primitives). */
     private boolean tables = true;
@@ -461,6 +464,7 @@ public final class SceneConverter {
     }
 
     private void material(Material m) {
+        if (m.reflectivity() > 0 || m.transparency() > 0) seesBackground = true;
         texel(m.color().r(), m.color().g(), m.color().b(), m.diffuse());
         texel(m.specular(), m.shininess(), m.transparency(), m.reflectivity());
         texel(m.emission().r(), m.emission().g(), m.emission().b(), 0);

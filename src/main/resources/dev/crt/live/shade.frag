@@ -152,8 +152,10 @@ void main() {
     }
     // Mirror and glass show what they see of the background only: the live view traces no
     // secondary rays against the scene.
+#ifdef SEES_BACKGROUND
     vec3 reflected = rd - 2.0 * dot(rd, n) * n;
     c = (1.0 - kt) * c + kr * backgroundColour(reflected) + kt * backgroundColour(rd);
+#endif
     vec4 outColour = encode(c);
     if (id == selected) outColour.rgb = mix(outColour.rgb, vec3(1.0, 0.6, 0.1), 0.35);
     else if (id == hovered) outColour.rgb = mix(outColour.rgb, vec3(0.3, 0.7, 1.0), 0.25);
