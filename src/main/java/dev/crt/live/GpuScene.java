@@ -11,28 +11,29 @@ import dev.crt.scene.Camera;
  *
  * <p>Layout of an entity at texel {@code o}: {@code o} = (leaves, program length, entity index,
  * scale), {@code o+1} = (bounds min, 0; or 1 when unbounded, 2 for a plane alone), {@code o+2} =
- * (bounds max, 0; the plane's world normal and offset for a plane alone), then one
- * texel per program step (opcode, leaf, truth table entries, truth table entries) in postfix order, then {@link #LEAF_TEXELS} texels
- * per primitive: (kind, parameters), three rows of the world-to-local matrix (a plane keeps its
+ * (bounds max, 0; the plane's world normal and offset for a plane alone), then one texel per
+ * program step (opcode, leaf, and two floats of the truth table, see {@link #TABLE_LEAVES}) in
+ * postfix order, then {@link #LEAF_TEXELS} texels per primitive: (kind, parameters), three rows of the world-to-local matrix (a plane keeps its
  * world normal and offset in the first), local box min and max (a cone: its length, then 0),
  * (colour, diffuse), (specular, shininess, transparency, reflectivity), (emission, 0).
  * Parameters: a cone's (r0, r1, capped), a torus's (major, minor, 0), zeros otherwise.
  *
  * <p>A mesh leaf: (MESH, smooth with vertex normals, vertex base, index base), the three matrix
- * rows, (triangles, closed, vertices, 0), a zero texel, the material. Its vertices (and then its
+ * rows, (triangles, closed, vertices, 0), (node base + 1 of its hierarchy in {@link #meshNodes}, or
+ * 0 for a mesh of at most {@link #MESH_CAST_LIMIT} triangles, 0, 0, 0), the material. Its vertices (and then its
  * normals) are texels of the mesh vertex buffer from the vertex base, its triangles three indices
  * each in the index buffer from the index base: the buffers hold {@link #meshes} one after the
  * other. A top-level mesh is rasterised (one draw per {@link #meshInstances} entry, its triangle
  * numbers kept per pixel for shading); a mesh inside CSG, and any mesh in shadow rays, is ray-cast
- * triangle by triangle in the shader, so only meshes of at most {@link #MESH_CAST_LIMIT} triangles
- * are allowed in CSG and only those cast shadows.
+ * in the shader: triangle by triangle up to {@link #MESH_CAST_LIMIT} triangles, through its
+ * hierarchy above that.
  */
 public final class GpuScene {
     public static final int HEADER_TEXELS = 3;
     public static final int LEAF_TEXELS = 9;
     /** Primitive kinds as the shader reads them. */
     public static final int SPHERE = 0, BOX = 1, PLANE = 2, EMPTY = 3, CONE = 4, TORUS = 5, MESH = 6;
-    /** Triangles up to which a mesh is ray-cast in the shader (inside CSG, and for shadow rays). */
+    /** Triangles up to which a mesh is ray-cast triangle by triangle in the shader (inside CSG, and for shadow rays); larger ones through a hierarchy. */
     public static final int MESH_CAST_LIMIT = 256;
     /**
      * Entities of up to this many primitives also carry their CSG program as a truth table (2^n
@@ -64,7 +65,7 @@ public final class GpuScene {
     final int[] unboundedOffsets;
     /** How many of the unbounded entities, listed first, are a single primitive. */
     final int unboundedPrimitives;
-    /** Whether every entity has its CSG truth table in its program texels (none has more than {@link #TABLE_LEAVES} primitives). */
+    /** Whether every entity has its CSG truth table (none has more than {@link #TABLE_LEAVES} primitives). */
     final boolean tables;
     /** Whether some material reflects or is transparent (its shading looks the background up). */
     final boolean seesBackground;
@@ -85,6 +86,10 @@ public final class GpuScene {
     final int kinds;
     /** The distinct meshes, in the order their vertices and indices lie in the mesh buffers. */
     final java.util.List<dev.crt.scene.MeshData> meshes;
+    /** Each of {@link #meshes}' triangles as the index buffer holds them: in its hierarchy's leaf order when it has one. */
+    final java.util.List<int[]> meshTriangles;
+    /** The node texels of the meshes' hierarchies ({@link MeshBvh}), one after the other. */
+    final float[] meshNodes;
     /** Texels of vertex data (positions, then normals when smooth) and indices of all {@link #meshes}. */
     final int meshVertexTexels, meshIndexCount;
     /** Top-level meshes: per instance (entity header offset, leaf address, vertex base, index base, triangles). */
@@ -93,10 +98,10 @@ public final class GpuScene {
     final float[] meshMatrices;
 
     GpuScene(float[] data, int texels, int[] entityOffset, Aabb[] entityBounds, int[] boundedOffsets,
-            float[] boundedBoxes, int boundedPrimitives, int[] unboundedOffsets, int unboundedPrimitives, boolean tables, boolean seesBackground,
-            float[] lights, int lightCount, Background background,
+            float[] boundedBoxes, int boundedPrimitives, int[] unboundedOffsets, int unboundedPrimitives, boolean tables,
+            boolean seesBackground, float[] lights, int lightCount, Background background,
             double gamma, Camera camera, Aabb bounds, int kinds, java.util.List<dev.crt.scene.MeshData> meshes,
-            int meshVertexTexels, int meshIndexCount, int[] meshInstances, float[] meshMatrices) {
+            java.util.List<int[]> meshTriangles, float[] meshNodes, int meshVertexTexels, int meshIndexCount, int[] meshInstances, float[] meshMatrices) {
         this.data = data;
         this.texels = texels;
         this.entityOffset = entityOffset;
@@ -116,6 +121,8 @@ public final class GpuScene {
         this.bounds = bounds;
         this.kinds = kinds;
         this.meshes = java.util.List.copyOf(meshes);
+        this.meshTriangles = java.util.List.copyOf(meshTriangles);
+        this.meshNodes = meshNodes;
         this.meshVertexTexels = meshVertexTexels;
         this.meshIndexCount = meshIndexCount;
         this.meshInstances = meshInstances;

@@ -47,6 +47,8 @@ public final class LiveRenderer implements AutoCloseable {
     private final int sceneBuffer, sceneTexture, directoryBuffer, directoryTexture;
     /** The meshes' vertices and triangles: vertex and index buffers of the rasterised draws and texture buffers of the shaders. */
     private final int meshVao, meshVertexBuffer, meshIndexBuffer, meshVertexTexture, meshIndexTexture;
+    /** The meshes' hierarchies (MeshBvh nodes), a texture buffer of the shaders. */
+    private final int meshNodeBuffer, meshNodeTexture;
     private java.util.List<dev.crt.scene.MeshData> uploadedMeshes = java.util.List.of();
     private int panoramaTexture;
     /** The geometry pass's framebuffer (id, distance, primitive address, depth) and the shaded colour's. */
@@ -112,6 +114,12 @@ public final class LiveRenderer implements AutoCloseable {
         meshIndexTexture = glGenTextures();
         glBindTexture(GL_TEXTURE_BUFFER, meshIndexTexture);
         glTexBuffer(GL_TEXTURE_BUFFER, GL_R32I, meshIndexBuffer);
+        meshNodeBuffer = glGenBuffers();
+        glBindBuffer(GL_TEXTURE_BUFFER, meshNodeBuffer);
+        glBufferData(GL_TEXTURE_BUFFER, 16, GL_STATIC_DRAW);
+        meshNodeTexture = glGenTextures();
+        glBindTexture(GL_TEXTURE_BUFFER, meshNodeTexture);
+        glTexBuffer(GL_TEXTURE_BUFFER, GL_RGBA32F, meshNodeBuffer);
         check("creating the renderer");
     }
 
@@ -128,7 +136,8 @@ public final class LiveRenderer implements AutoCloseable {
                 + (scene.seesBackground ? "#define SEES_BACKGROUND\n" : "")
                 + (scene.gamma == 1 ? "#define LINEAR_OUTPUT\n" : "")
                 + ((scene.kinds & 1 << GpuScene.MESH) != 0
-                        ? "#define HAS_MESH\n#define MESH_CAST_LIMIT " + GpuScene.MESH_CAST_LIMIT + "\n" : "");
+                        ? "#define HAS_MESH\n#define MESH_CAST_LIMIT " + GpuScene.MESH_CAST_LIMIT + "\n" : "")
+                + (scene.meshNodes.length > 0 ? "#define HAS_MESH_BVH\n#define MESH_BVH_DEPTH " + MeshBvh.MAX_DEPTH + "\n" : "");
     }
 
     /** The geometry program for one-primitive entities of {@code kind} ({@code primitives}) or for CSG entities. */
@@ -269,10 +278,11 @@ public final class LiveRenderer implements AutoCloseable {
     private void uploadMeshes(GpuScene next) {
         FloatBuffer vertices = BufferUtils.createFloatBuffer(4 * Math.max(1, next.meshVertexTexels));
         IntBuffer indices = BufferUtils.createIntBuffer(Math.max(1, next.meshIndexCount));
-        for (dev.crt.scene.MeshData m : next.meshes) {
+        for (int i = 0; i < next.meshes.size(); i++) {
+            dev.crt.scene.MeshData m = next.meshes.get(i);
             putTexels(vertices, m.positions());
             if (m.normals() != null) putTexels(vertices, m.normals());
-            indices.put(m.triangles());
+            indices.put(next.meshTriangles.get(i));
         }
         vertices.position(0).limit(vertices.capacity());
         indices.position(0).limit(indices.capacity());
@@ -283,7 +293,11 @@ public final class LiveRenderer implements AutoCloseable {
         glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, meshIndexBuffer);
         glBufferData(GL_ELEMENT_ARRAY_BUFFER, indices, GL_STATIC_DRAW);
         glBindVertexArray(0);
-        lastUploadFloats += 4L * next.meshVertexTexels + next.meshIndexCount;
+        FloatBuffer nodes = BufferUtils.createFloatBuffer(Math.max(4, next.meshNodes.length));
+        nodes.put(next.meshNodes).position(0);
+        glBindBuffer(GL_TEXTURE_BUFFER, meshNodeBuffer);
+        glBufferData(GL_TEXTURE_BUFFER, nodes, GL_STATIC_DRAW);
+        lastUploadFloats += 4L * next.meshVertexTexels + next.meshIndexCount + next.meshNodes.length;
     }
 
     private static void putTexels(FloatBuffer out, double[] xyz) {
@@ -295,7 +309,7 @@ public final class LiveRenderer implements AutoCloseable {
 
     /**
      * Where each primitive kind's instances start among the one-primitive entities, bounded and
-     * unbounded (entry {@code GpuScene.KINDS} is the end): each kind is drawn by a program with only
+     * unbounded (entry {@code KINDS} is the end): each kind is drawn by a program with only
      * its own intersection code, since llvmpipe runs every kind's code for every pixel otherwise.
      */
     private final int[] boundedKindStart = new int[KINDS + 1], unboundedKindStart = new int[KINDS + 1];
@@ -570,6 +584,7 @@ public final class LiveRenderer implements AutoCloseable {
         if ((scene.kinds & 1 << GpuScene.MESH) != 0) {
             bind(p, "meshVertices", 7, GL_TEXTURE_BUFFER, meshVertexTexture);
             bind(p, "meshIndices", 8, GL_TEXTURE_BUFFER, meshIndexTexture);
+            if (scene.meshNodes.length > 0) bind(p, "meshNodes", 9, GL_TEXTURE_BUFFER, meshNodeTexture);
         }
     }
 
@@ -698,9 +713,10 @@ public final class LiveRenderer implements AutoCloseable {
     @Override
     public void close() {
         deleteFramebuffers();
-        glDeleteTextures(new int[] {sceneTexture, directoryTexture, panoramaTexture, meshVertexTexture, meshIndexTexture});
+        glDeleteTextures(new int[] {sceneTexture, directoryTexture, panoramaTexture, meshVertexTexture, meshIndexTexture,
+            meshNodeTexture});
         glDeleteBuffers(new int[] {sceneBuffer, directoryBuffer, cubeVbo, instanceVbo, csgInstanceVbo, fullInstanceVbo,
-            meshVertexBuffer, meshIndexBuffer});
+            meshVertexBuffer, meshIndexBuffer, meshNodeBuffer});
         glDeleteVertexArrays(new int[] {cubeVao, csgVao, fullVao, meshVao});
         for (int p : geometryPrograms.values()) glDeleteProgram(p);
         for (int p : shadePrograms.values()) glDeleteProgram(p);

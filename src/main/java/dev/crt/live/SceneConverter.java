@@ -41,6 +41,10 @@ public final class SceneConverter {
     /** The distinct meshes met so far and their {vertex base, index base} in the mesh buffers. */
     private final Map<MeshData, int[]> meshBases = new IdentityHashMap<>();
     private final List<MeshData> meshes = new ArrayList<>();
+    /** Each mesh's triangles as sent (in its hierarchy's leaf order when it has one), and the hierarchies' node texels. */
+    private final List<int[]> meshTriangles = new ArrayList<>();
+    private float[] meshNodes = new float[0];
+    private int meshNodeTexels;
     private int meshVertexTexels, meshIndexCount;
     /** Top-level meshes: GpuScene.MESH_INSTANCE_INTS ints and 12 floats each. */
     private int[] meshInstances = new int[0];
@@ -109,7 +113,7 @@ public final class SceneConverter {
         System.arraycopy(unbounded, n - nuc, unboundedAll, nu, nuc);
         return new GpuScene(data, size / 4, offsets, bounds, boundedAll, boxesAll, nb, unboundedAll, nu, tables, seesBackground, lights, sceneLights.size(),
                 scene.settings().background(), scene.settings().gamma(), scene.settings().camera(), all, kinds,
-                meshes, meshVertexTexels, meshIndexCount,
+                meshes, meshTriangles, Arrays.copyOf(meshNodes, 4 * meshNodeTexels), meshVertexTexels, meshIndexCount,
                 Arrays.copyOf(meshInstances, GpuScene.MESH_INSTANCE_INTS * meshInstanceCount),
                 Arrays.copyOf(meshMatrices, 12 * meshInstanceCount));
     }
@@ -383,20 +387,30 @@ public final class SceneConverter {
             throw new UnsupportedSceneException("the live view draws only closed meshes inside CSG; the mesh "
                     + data.name() + " at " + m.span() + " is open");
         }
-        if (inCsg && triangles > GpuScene.MESH_CAST_LIMIT) {
-            throw new UnsupportedSceneException("the live view draws meshes of at most " + GpuScene.MESH_CAST_LIMIT
-                    + " triangles inside CSG; the mesh " + data.name() + " at " + m.span() + " has " + triangles);
-        }
         boolean normals = m.smooth() && data.normals() != null;
         int[] base = meshBases.get(data);
         if (base == null) {
-            base = new int[] {meshVertexTexels, meshIndexCount};
+            int[] order = data.triangles();
+            int nodes = 0;
+            if (triangles > GpuScene.MESH_CAST_LIMIT) {
+                // Too many to cast triangle by triangle: a hierarchy, its triangles in its leaves' order.
+                MeshBvh bvh = MeshBvh.of(data);
+                order = bvh.triangles;
+                nodes = meshNodeTexels + 1;
+                if (meshNodes.length < 4 * meshNodeTexels + bvh.nodes.length) {
+                    meshNodes = Arrays.copyOf(meshNodes, Math.max(2 * meshNodes.length, 4 * meshNodeTexels + bvh.nodes.length));
+                }
+                System.arraycopy(bvh.nodes, 0, meshNodes, 4 * meshNodeTexels, bvh.nodes.length);
+                meshNodeTexels += bvh.nodes.length / 4;
+            }
+            base = new int[] {meshVertexTexels, meshIndexCount, nodes};
             meshBases.put(data, base);
             meshes.add(data);
+            meshTriangles.add(order);
             meshVertexTexels += data.vertexCount() * (data.normals() != null ? 2 : 1);
             meshIndexCount += data.triangles().length;
             // The leaf holds the bases as floats: exact up to 2^24.
-            if (meshVertexTexels > 1 << 24 || meshIndexCount > 1 << 24) {
+            if (meshVertexTexels > 1 << 24 || meshIndexCount > 1 << 24 || meshNodeTexels > 1 << 24) {
                 throw new UnsupportedSceneException("the live view draws meshes of at most " + (1 << 24)
                         + " vertices and indices in all; this scene has more");
             }
@@ -406,7 +420,7 @@ public final class SceneConverter {
         texel(GpuScene.MESH, normals ? 1 : 0, base[0], base[1]);
         matrix(t.inverseMatrix());
         texel(triangles, data.closed() ? 1 : 0, data.vertexCount(), 0);
-        zeros(1);
+        texel(base[2], 0, 0, 0);
         material(m.material());
         if (!inCsg) {
             int n = meshInstanceCount++;

@@ -21,6 +21,9 @@ int evF[MAX_EVENTS];
 int faceHit;
 uniform samplerBuffer meshVertices;
 uniform isamplerBuffer meshIndices;
+#ifdef HAS_MESH_BVH
+uniform samplerBuffer meshNodes;
+#endif
 #endif
 #ifdef HAS_TORUS
 // A torus's second interval along the ray (leafSpan returns the first); INF when there is none.
@@ -230,34 +233,63 @@ void meshTriangle(int L, int f, out vec3 a, out vec3 b, out vec3 c) {
     c = texelFetch(meshVertices, vb + texelFetch(meshIndices, ib + 2).x).xyz;
 }
 
+// Triangle f of the mesh of leaf k at L against the line o + t d (mesh coordinates): a crossing
+// up to tMin toggles whether the line is inside at once, a later one before tMax is an event.
+void meshTriangleEvent(int k, int L, int f, vec3 o, vec3 d, float tMin, float tMax, inout uint mask, inout int n) {
+    vec3 a, b, c;
+    meshTriangle(L, f, a, b, c);
+    // Moller and Trumbore, edges inclusive.
+    vec3 e1 = b - a, e2 = c - a, pv = cross(d, e2);
+    float det = dot(e1, pv);
+    if (det == 0.0) return;
+    float inv = 1.0 / det;
+    vec3 tv = o - a;
+    float u = dot(tv, pv) * inv;
+    if (u < 0.0 || u > 1.0) return;
+    vec3 qv = cross(tv, e1);
+    float v = dot(d, qv) * inv;
+    if (v < 0.0 || u + v > 1.0) return;
+    float t = dot(e2, qv) * inv;
+    if (t <= tMin) {
+        mask ^= 1u << uint(k);
+    } else if (t < tMax && n < MAX_EVENTS) {
+        evT[n] = t; evL[n] = k; evF[n] = f; n++;
+    }
+}
+
 // Every crossing of the line o + t d (mesh coordinates) with the mesh of leaf k at L: each one
 // toggles whether the line is inside (a closed mesh's inside by parity, as the ray tracer's),
-// those up to tMin at once, the later ones as events. Meshes of more than MESH_CAST_LIMIT
-// triangles are not cast (they cast no shadows; the converter keeps them out of CSG).
-void meshEvents(int k, int L, vec3 o, vec3 d, float tMin, inout uint mask, inout int n) {
+// those up to tMin at once, the later ones before tMax as events. A mesh of more than
+// MESH_CAST_LIMIT triangles is walked through its hierarchy (MeshBvh): every node the line
+// meets, before tMin too, since the crossings there decide the inside at tMin.
+void meshEvents(int k, int L, vec3 o, vec3 d, float tMin, float tMax, inout uint mask, inout int n) {
     int count = int(T(L + 4).x);
-    if (count > MESH_CAST_LIMIT) return;
-    for (int f = 0; f < count; f++) {
-        vec3 a, b, c;
-        meshTriangle(L, f, a, b, c);
-        // Moller and Trumbore, edges inclusive.
-        vec3 e1 = b - a, e2 = c - a, pv = cross(d, e2);
-        float det = dot(e1, pv);
-        if (det == 0.0) continue;
-        float inv = 1.0 / det;
-        vec3 tv = o - a;
-        float u = dot(tv, pv) * inv;
-        if (u < 0.0 || u > 1.0) continue;
-        vec3 qv = cross(tv, e1);
-        float v = dot(d, qv) * inv;
-        if (v < 0.0 || u + v > 1.0) continue;
-        float t = dot(e2, qv) * inv;
-        if (t <= tMin) {
-            mask ^= 1u << uint(k);
-        } else if (n < MAX_EVENTS) {
-            evT[n] = t; evL[n] = k; evF[n] = f; n++;
+#ifdef HAS_MESH_BVH
+    int nodes = int(T(L + 5).x) - 1;
+    if (nodes >= 0) {
+        vec3 inv = 1.0 / mix(d, vec3(1e-30), equal(d, vec3(0.0)));
+        int stack[MESH_BVH_DEPTH];
+        int sp = 0, node = 0;
+        while (true) {
+            vec4 lo = texelFetch(meshNodes, nodes + 2 * node), hi = texelFetch(meshNodes, nodes + 2 * node + 1);
+            vec3 t0 = (lo.xyz - o) * inv, t1 = (hi.xyz - o) * inv;
+            vec3 tn = min(t0, t1), tf = max(t0, t1);
+            bool met = max(max(tn.x, tn.y), tn.z) <= min(min(tf.x, tf.y), tf.z) && max(max(tn.x, tn.y), tn.z) < tMax;
+            int first = int(lo.w), leafCount = int(hi.w);
+            for (int i = 0; met && i < leafCount; i++) meshTriangleEvent(k, L, first + i, o, d, tMin, tMax, mask, n);
+            if (met && leafCount == 0) {
+                stack[sp++] = first + 1;
+                node = first;
+            } else {
+                if (sp == 0) break;
+                node = stack[--sp];
+            }
         }
+        return;
     }
+#endif
+    if (count > MESH_CAST_LIMIT) return;
+    for (int f = 0; f < count; f++) meshTriangleEvent(k, L, f, o, d, tMin, tMax, mask, n);
 }
 
 // The winding normal of the triangle meshNormal last looked at, and how far the origin of its
@@ -422,7 +454,7 @@ float walk(int o, vec3 ro, vec3 rd, float tMin, float tMax, bool transmittance, 
             vec4 r0 = T(L + 1), r1 = T(L + 2), r2 = T(L + 3);
             vec3 o = vec3(dot(r0.xyz, ro) + r0.w, dot(r1.xyz, ro) + r1.w, dot(r2.xyz, ro) + r2.w);
             vec3 d = vec3(dot(r0.xyz, rd), dot(r1.xyz, rd), dot(r2.xyz, rd));
-            meshEvents(k, L, o, d, tMin, mask, n);
+            meshEvents(k, L, o, d, tMin, tMax, mask, n);
             continue;
         }
 #endif

@@ -58,7 +58,7 @@ vec2 phong(vec3 n, vec3 v, vec3 w, float kd, float ks, float shininess) {
 // once per crossing plus once, not once per entity and light.
 vec4 shadows(vec3 origin, mat4 towards, bvec4 needed) {
     vec4 s = vec4(1.0);
-    int lights = min(lightCount, shadowLights);
+    int lights = entityCount > 0 ? min(lightCount, shadowLights) : 0;
     int l = 0, e = 0;
     while (true) {
         int o = -1, crossedLight = 0;

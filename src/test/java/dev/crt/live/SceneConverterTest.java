@@ -243,19 +243,32 @@ class SceneConverterTest {
     }
 
     @Test
-    void meshesTheShaderCannotCastAreRefusedInCsgWithTheirPlace() {
+    void openMeshesAreRefusedInCsgWithTheirPlaceAndLargeOnesGetAHierarchy() {
         SourceSpan at = new SourceSpan("m.crt", 4, 9, 0, 1);
-        Mesh big = new Mesh(tetrahedron(GpuScene.MESH_CAST_LIMIT / 4 + 1), false, M, Transform.IDENTITY, at);
-        Scene s = scene(List.of(new Csg(CsgOperation.UNION, big, SPHERE, Transform.IDENTITY, at)), List.of(), Background.BLACK);
-        assertThatThrownBy(() -> SceneConverter.convert(s)).isInstanceOf(UnsupportedSceneException.class)
-                .hasMessage("the live view draws meshes of at most 256 triangles inside CSG; the mesh tetrahedron at m.crt:4:9 has 260");
+        MeshData many = MeshBvhTest.sphere(12, 12);
+        Mesh big = new Mesh(many, false, M, Transform.IDENTITY, at);
+        Scene s = scene(List.of(new Csg(CsgOperation.UNION, big, SPHERE, Transform.IDENTITY, at), SPHERE, big), List.of(),
+                Background.BLACK);
+        GpuScene g = SceneConverter.convert(s);
+        // Sent once, its triangles in the hierarchy's order; both leaves point at its nodes.
+        assertThat(g.meshes).hasSize(1);
+        assertThat(g.meshTriangles.get(0)).isEqualTo(MeshBvh.of(many).triangles);
+        assertThat(g.meshNodes).isEqualTo(MeshBvh.of(many).nodes);
+        float[] d = g.texelData();
+        int csgLeaf = 4 * (g.entityOffset[0] + GpuScene.HEADER_TEXELS + 3);
+        assertThat(d[csgLeaf]).isEqualTo(GpuScene.MESH);
+        assertThat(d[csgLeaf + 4 * 5]).as("node base + 1").isEqualTo(1);
+        assertThat(d[4 * g.meshInstances[1] + 4 * 5]).as("the top-level instance too").isEqualTo(1);
+        // A small mesh has none.
+        GpuScene small = SceneConverter.convert(scene(List.of(new Mesh(tetrahedron(1), false, M, Transform.IDENTITY, at)),
+                List.of(), Background.BLACK));
+        assertThat(small.meshNodes).isEmpty();
+        assertThat(small.texelData()[4 * small.meshInstances[1] + 4 * 5]).isEqualTo(0);
         MeshData open = new MeshData("sheet", new double[] {0, 0, 0, 1, 0, 0, 0, 1, 0}, new int[] {0, 1, 2}, null, null, false);
         Scene o = scene(List.of(new Csg(CsgOperation.UNION, new Mesh(open, false, M, Transform.IDENTITY, at), SPHERE,
                 Transform.IDENTITY, at)), List.of(), Background.BLACK);
         assertThatThrownBy(() -> SceneConverter.convert(o)).isInstanceOf(UnsupportedSceneException.class)
                 .hasMessage("the live view draws only closed meshes inside CSG; the mesh sheet at m.crt:4:9 is open");
-        // The same big mesh alone is drawn (rasterised).
-        assertThat(SceneConverter.convert(scene(List.of(big), List.of(), Background.BLACK)).meshInstances).hasSize(GpuScene.MESH_INSTANCE_INTS);
     }
 
     @Test
