@@ -26,7 +26,7 @@ import dev.crt.scene.Camera;
  * other. A top-level mesh is rasterised (one draw per {@link #meshInstances} entry, its triangle
  * numbers kept per pixel for shading); a mesh inside CSG, and any mesh in shadow rays, is ray-cast
  * in the shader: triangle by triangle up to {@link #MESH_CAST_LIMIT} triangles, through its
- * hierarchy above that.
+ * hierarchy above that, up to {@link #MESH_BVH_LIMIT} (larger ones cast no shadows and are refused in CSG).
  */
 public final class GpuScene {
     public static final int HEADER_TEXELS = 3;
@@ -35,6 +35,12 @@ public final class GpuScene {
     public static final int SPHERE = 0, BOX = 1, PLANE = 2, EMPTY = 3, CONE = 4, TORUS = 5, MESH = 6;
     /** Triangles up to which a mesh is ray-cast triangle by triangle in the shader (inside CSG, and for shadow rays); larger ones through a hierarchy. */
     public static final int MESH_CAST_LIMIT = 256;
+    /**
+     * Triangles up to which a larger mesh gets a hierarchy ({@link MeshBvh}; its first build takes
+     * about a second at 240,000 triangles, on the thread that sets the scene): meshes beyond it are
+     * rasterised only, cast no shadows and are refused inside CSG.
+     */
+    public static final int MESH_BVH_LIMIT = 100_000;
     /**
      * Entities of up to this many primitives also carry their CSG program as a truth table (2^n
      * entries, sixteen to a float in the z and w of the program texels, which a program of 2n − 1

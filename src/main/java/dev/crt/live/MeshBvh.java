@@ -3,8 +3,8 @@ package dev.crt.live;
 import dev.crt.scene.MeshData;
 import java.util.Arrays;
 import java.util.Collections;
+import java.util.LinkedHashMap;
 import java.util.Map;
-import java.util.WeakHashMap;
 
 /**
  * A bounding volume hierarchy over one mesh's triangles, for the shaders that ray-cast meshes too
@@ -27,16 +27,43 @@ final class MeshBvh {
     /** Eight floats per node, see the class comment. */
     final float[] nodes;
 
-    private static final Map<MeshData, MeshBvh> BUILT = Collections.synchronizedMap(new WeakHashMap<>());
+    /**
+     * The last hierarchies built, by the mesh's content: every compile reads a mesh file into a new
+     * {@link MeshData}, and the hierarchy of the same triangles must not be built again each time.
+     */
+    private static final Map<Content, MeshBvh> BUILT = Collections.synchronizedMap(new LinkedHashMap<>(8, 0.75f, true) {
+        @Override
+        protected boolean removeEldestEntry(Map.Entry<Content, MeshBvh> eldest) {
+            return size() > 8;
+        }
+    });
+
+    /** A mesh's positions and triangles compared by value. */
+    private record Content(double[] positions, int[] triangles, int hash) {
+        Content(MeshData m) {
+            this(m.positions(), m.triangles(), 31 * Arrays.hashCode(m.positions()) + Arrays.hashCode(m.triangles()));
+        }
+
+        @Override
+        public boolean equals(Object o) {
+            return o instanceof Content c && c.hash == hash && Arrays.equals(c.positions, positions)
+                    && Arrays.equals(c.triangles, triangles);
+        }
+
+        @Override
+        public int hashCode() {
+            return hash;
+        }
+    }
 
     private MeshBvh(int[] triangles, float[] nodes) {
         this.triangles = triangles;
         this.nodes = nodes;
     }
 
-    /** The hierarchy of {@code mesh}, built once per mesh (a recompile that keeps the mesh keeps it). */
+    /** The hierarchy of {@code mesh}, built once for the same positions and triangles (a recompile that keeps the mesh keeps it). */
     static MeshBvh of(MeshData mesh) {
-        return BUILT.computeIfAbsent(mesh, MeshBvh::build);
+        return BUILT.computeIfAbsent(new Content(mesh), c -> build(mesh));
     }
 
     private static MeshBvh build(MeshData mesh) {
@@ -52,7 +79,7 @@ final class MeshBvh {
                 centre[3 * f + a] = 0.5 * (lo[3 * f + a] + hi[3 * f + a]);
             }
         }
-        Integer[] order = new Integer[n];
+        int[] order = new int[n];
         for (int f = 0; f < n; f++) order[f] = f;
         Builder b = new Builder(lo, hi, centre, order, Math.max(1, 2 * n));
         b.node(0, 0, n, 1);
@@ -64,11 +91,11 @@ final class MeshBvh {
 
     private static final class Builder {
         final double[] lo, hi, centre;
-        final Integer[] order;
+        final int[] order;
         float[] nodes;
         int count = 1;
 
-        Builder(double[] lo, double[] hi, double[] centre, Integer[] order, int capacity) {
+        Builder(double[] lo, double[] hi, double[] centre, int[] order, int capacity) {
             this.lo = lo;
             this.hi = hi;
             this.centre = centre;
@@ -105,15 +132,35 @@ final class MeshBvh {
             for (int a = 1; a < 3; a++) {
                 if (spread[3 + a] - spread[a] > spread[3 + axis] - spread[axis]) axis = a;
             }
-            int by = axis;
-            Arrays.sort(order, from, to, (x, y) -> Double.compare(centre[3 * x + by], centre[3 * y + by]));
             int mid = (from + to) >>> 1;
+            select(from, to, mid, axis);
             int left = count;
             count += 2;
             nodes[8 * i + 3] = left;
             nodes[8 * i + 7] = 0;
             node(left, from, mid, depth + 1);
             node(left + 1, mid, to, depth + 1);
+        }
+
+        /** Reorders [from, to) so that position k holds the triangle of its rank by centre on the axis, smaller ones before it, larger after. */
+        void select(int from, int to, int k, int axis) {
+            int l = from, r = to - 1;
+            while (l < r) {
+                double pivot = centre[3 * order[(l + r) >>> 1] + axis];
+                int i = l, j = r;
+                while (i <= j) {
+                    while (centre[3 * order[i] + axis] < pivot) i++;
+                    while (centre[3 * order[j] + axis] > pivot) j--;
+                    if (i <= j) {
+                        int swap = order[i];
+                        order[i++] = order[j];
+                        order[j--] = swap;
+                    }
+                }
+                if (k <= j) r = j;
+                else if (k >= i) l = i;
+                else return;
+            }
         }
     }
 }

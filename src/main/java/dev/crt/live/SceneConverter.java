@@ -387,12 +387,16 @@ public final class SceneConverter {
             throw new UnsupportedSceneException("the live view draws only closed meshes inside CSG; the mesh "
                     + data.name() + " at " + m.span() + " is open");
         }
+        if (inCsg && triangles > GpuScene.MESH_BVH_LIMIT) {
+            throw new UnsupportedSceneException("the live view draws meshes of at most " + GpuScene.MESH_BVH_LIMIT
+                    + " triangles inside CSG; the mesh " + data.name() + " at " + m.span() + " has " + triangles);
+        }
         boolean normals = m.smooth() && data.normals() != null;
         int[] base = meshBases.get(data);
         if (base == null) {
             int[] order = data.triangles();
             int nodes = 0;
-            if (triangles > GpuScene.MESH_CAST_LIMIT) {
+            if (triangles > GpuScene.MESH_CAST_LIMIT && triangles <= GpuScene.MESH_BVH_LIMIT) {
                 // Too many to cast triangle by triangle: a hierarchy, its triangles in its leaves' order.
                 MeshBvh bvh = MeshBvh.of(data);
                 order = bvh.triangles;

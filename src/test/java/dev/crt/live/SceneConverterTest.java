@@ -259,6 +259,13 @@ class SceneConverterTest {
         assertThat(d[csgLeaf]).isEqualTo(GpuScene.MESH);
         assertThat(d[csgLeaf + 4 * 5]).as("node base + 1").isEqualTo(1);
         assertThat(d[4 * g.meshInstances[1] + 4 * 5]).as("the top-level instance too").isEqualTo(1);
+        // Beyond the hierarchy's limit: refused inside CSG with its place, drawn alone without one.
+        Mesh huge = new Mesh(tetrahedron(GpuScene.MESH_BVH_LIMIT / 4 + 1), false, M, Transform.IDENTITY, at);
+        Scene h = scene(List.of(new Csg(CsgOperation.UNION, huge, SPHERE, Transform.IDENTITY, at)), List.of(), Background.BLACK);
+        assertThatThrownBy(() -> SceneConverter.convert(h)).isInstanceOf(UnsupportedSceneException.class)
+                .hasMessage("the live view draws meshes of at most 100000 triangles inside CSG; the mesh tetrahedron at m.crt:4:9"
+                        + " has 100004");
+        assertThat(SceneConverter.convert(scene(List.of(huge), List.of(), Background.BLACK)).meshNodes).isEmpty();
         // A small mesh has none.
         GpuScene small = SceneConverter.convert(scene(List.of(new Mesh(tetrahedron(1), false, M, Transform.IDENTITY, at)),
                 List.of(), Background.BLACK));
