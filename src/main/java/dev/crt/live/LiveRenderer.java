@@ -42,11 +42,13 @@ public final class LiveRenderer implements AutoCloseable {
     private final java.util.Map<String, Integer> shadePrograms = new java.util.HashMap<>();
     private final String common;
     private final int cubeVao, cubeVbo, instanceVbo, csgVao, csgInstanceVbo, fullVao, fullInstanceVbo;
-    /** Proxy boxes of one-primitive entities (cubeVao) and of CSG entities (csgVao). */
-    private int primitiveInstances, csgInstances;
+    /** Proxy boxes of CSG entities (csgVao); those of one-primitive entities (cubeVao) are counted by kind. */
+    private int csgInstances;
     private final int sceneBuffer, sceneTexture, directoryBuffer, directoryTexture;
     /** The meshes' vertices and triangles: vertex and index buffers of the rasterised draws and texture buffers of the shaders. */
     private final int meshVao, meshVertexBuffer, meshIndexBuffer, meshVertexTexture, meshIndexTexture;
+    /** The meshes' hierarchies (MeshBvh nodes), a texture buffer of the shaders. */
+    private final int meshNodeBuffer, meshNodeTexture;
     private java.util.List<dev.crt.scene.MeshData> uploadedMeshes = java.util.List.of();
     private int panoramaTexture;
     /** The geometry pass's framebuffer (id, distance, primitive address, depth) and the shaded colour's. */
@@ -71,7 +73,7 @@ public final class LiveRenderer implements AutoCloseable {
         glVertexAttribPointer(0, 3, GL_FLOAT, false, 12, 0);
         instanceVbo = glGenBuffers();
         glBindBuffer(GL_ARRAY_BUFFER, instanceVbo);
-        instanceAttributes();
+        instanceAttributes(0);
 
         csgVao = glGenVertexArrays();
         glBindVertexArray(csgVao);
@@ -80,13 +82,13 @@ public final class LiveRenderer implements AutoCloseable {
         glVertexAttribPointer(0, 3, GL_FLOAT, false, 12, 0);
         csgInstanceVbo = glGenBuffers();
         glBindBuffer(GL_ARRAY_BUFFER, csgInstanceVbo);
-        instanceAttributes();
+        instanceAttributes(0);
 
         fullVao = glGenVertexArrays();
         glBindVertexArray(fullVao);
         fullInstanceVbo = glGenBuffers();
         glBindBuffer(GL_ARRAY_BUFFER, fullInstanceVbo);
-        instanceAttributes();
+        instanceAttributes(0);
         glBindVertexArray(0);
 
         sceneBuffer = glGenBuffers();
@@ -112,23 +114,37 @@ public final class LiveRenderer implements AutoCloseable {
         meshIndexTexture = glGenTextures();
         glBindTexture(GL_TEXTURE_BUFFER, meshIndexTexture);
         glTexBuffer(GL_TEXTURE_BUFFER, GL_R32I, meshIndexBuffer);
+        meshNodeBuffer = glGenBuffers();
+        glBindBuffer(GL_TEXTURE_BUFFER, meshNodeBuffer);
+        glBufferData(GL_TEXTURE_BUFFER, 16, GL_STATIC_DRAW);
+        meshNodeTexture = glGenTextures();
+        glBindTexture(GL_TEXTURE_BUFFER, meshNodeTexture);
+        glTexBuffer(GL_TEXTURE_BUFFER, GL_RGBA32F, meshNodeBuffer);
         check("creating the renderer");
     }
 
-    /** The shaders' defines: the background kind, and the cone and torus code only where the scene has them. */
+    /**
+     * The shaders' defines: the background kind, the cone, torus and mesh code only where the scene
+     * has them, CSG by truth tables where every entity has one, the background seen in mirrors and
+     * glass only where there are some, gamma only when it is not 1.
+     */
     private String header(int backgroundKind) {
         return "#version 330 core\n#define BACKGROUND_KIND " + backgroundKind + "\n"
                 + ((scene.kinds & 1 << GpuScene.CONE) != 0 ? "#define HAS_CONE\n" : "")
                 + ((scene.kinds & 1 << GpuScene.TORUS) != 0 ? "#define HAS_TORUS\n" : "")
+                + (scene.tables ? "#define CSG_TABLE\n" : "")
+                + (scene.seesBackground ? "#define SEES_BACKGROUND\n" : "")
+                + (scene.gamma == 1 ? "#define LINEAR_OUTPUT\n" : "")
                 + ((scene.kinds & 1 << GpuScene.MESH) != 0
-                        ? "#define HAS_MESH\n#define MESH_CAST_LIMIT " + GpuScene.MESH_CAST_LIMIT + "\n" : "");
+                        ? "#define HAS_MESH\n#define MESH_CAST_LIMIT " + GpuScene.MESH_CAST_LIMIT + "\n" : "")
+                + (scene.meshNodes.length > 0 ? "#define HAS_MESH_BVH\n#define MESH_BVH_DEPTH " + MeshBvh.MAX_DEPTH + "\n" : "");
     }
 
-    /** The geometry program for one-primitive entities ({@code primitives}) or for CSG entities. */
-    private int geometryProgram(boolean primitives) {
-        String defines = header(0) + (primitives ? "#define PRIMITIVES\n" : "");
+    /** The geometry program for one-primitive entities of {@code kind} ({@code primitives}) or for CSG entities. */
+    private int geometryProgram(boolean primitives, int kind) {
+        String defines = header(0) + (primitives ? "#define PRIMITIVES\n#define ONE_KIND " + kind + "\n" : "");
         return geometryPrograms.computeIfAbsent(defines,
-                d -> program(resource("entity.vert"), d + common + resource("entity.frag")));
+                d -> program(d + resource("entity.vert"), d + common + resource("entity.frag")));
     }
 
     private int meshProgram() {
@@ -152,16 +168,16 @@ public final class LiveRenderer implements AutoCloseable {
         throw new UnsupportedSceneException("the live view cannot show a " + bg.getClass().getSimpleName() + " yet");
     }
 
-    /** Per instance: box min (3 floats), box max (3 floats), header offset (1 int); 28 bytes. */
-    private static void instanceAttributes() {
+    /** Per instance, from byte {@code from} of the bound buffer: box min (3 floats), box max (3 floats), header offset (1 int); 28 bytes. */
+    private static void instanceAttributes(long from) {
         glEnableVertexAttribArray(1);
-        glVertexAttribPointer(1, 3, GL_FLOAT, false, 28, 0);
+        glVertexAttribPointer(1, 3, GL_FLOAT, false, 28, from);
         glVertexAttribDivisor(1, 1);
         glEnableVertexAttribArray(2);
-        glVertexAttribPointer(2, 3, GL_FLOAT, false, 28, 12);
+        glVertexAttribPointer(2, 3, GL_FLOAT, false, 28, from + 12);
         glVertexAttribDivisor(2, 1);
         glEnableVertexAttribArray(3);
-        glVertexAttribIPointer(3, 1, GL_INT, 28, 24);
+        glVertexAttribIPointer(3, 1, GL_INT, 28, from + 24);
         glVertexAttribDivisor(3, 1);
     }
 
@@ -223,16 +239,19 @@ public final class LiveRenderer implements AutoCloseable {
         glTexBuffer(GL_TEXTURE_BUFFER, GL_R32I, directoryBuffer);
 
         glBindBuffer(GL_ARRAY_BUFFER, instanceVbo);
-        glBufferData(GL_ARRAY_BUFFER, instances(next.boundedBoxes, next.boundedOffsets, 0, next.boundedPrimitives),
-                GL_DYNAMIC_DRAW);
+        glBufferData(GL_ARRAY_BUFFER, instancesByKind(next, next.boundedBoxes, next.boundedOffsets, next.boundedPrimitives,
+                boundedKindStart), GL_DYNAMIC_DRAW);
         glBindBuffer(GL_ARRAY_BUFFER, csgInstanceVbo);
         glBufferData(GL_ARRAY_BUFFER, instances(next.boundedBoxes, next.boundedOffsets, next.boundedPrimitives,
                 next.boundedOffsets.length), GL_DYNAMIC_DRAW);
-        primitiveInstances = next.boundedPrimitives;
         csgInstances = next.boundedOffsets.length - next.boundedPrimitives;
         glBindBuffer(GL_ARRAY_BUFFER, fullInstanceVbo);
-        glBufferData(GL_ARRAY_BUFFER, instances(new float[6 * next.unboundedOffsets.length], next.unboundedOffsets,
-                0, next.unboundedOffsets.length), GL_DYNAMIC_DRAW);
+        float[] noBoxes = new float[6 * next.unboundedOffsets.length];
+        int nu = next.unboundedOffsets.length, nup = next.unboundedPrimitives;
+        ByteBuffer unbounded = BufferUtils.createByteBuffer(Math.max(28, 28 * nu));
+        unbounded.put(instancesByKind(next, noBoxes, next.unboundedOffsets, nup, unboundedKindStart).limit(28 * nup));
+        unbounded.put(instances(noBoxes, next.unboundedOffsets, nup, nu).limit(28 * (nu - nup)));
+        glBufferData(GL_ARRAY_BUFFER, unbounded.position(0).limit(unbounded.capacity()), GL_DYNAMIC_DRAW);
 
         if (!sameMeshes(next.meshes, uploadedMeshes)) {
             uploadMeshes(next);
@@ -259,10 +278,11 @@ public final class LiveRenderer implements AutoCloseable {
     private void uploadMeshes(GpuScene next) {
         FloatBuffer vertices = BufferUtils.createFloatBuffer(4 * Math.max(1, next.meshVertexTexels));
         IntBuffer indices = BufferUtils.createIntBuffer(Math.max(1, next.meshIndexCount));
-        for (dev.crt.scene.MeshData m : next.meshes) {
+        for (int i = 0; i < next.meshes.size(); i++) {
+            dev.crt.scene.MeshData m = next.meshes.get(i);
             putTexels(vertices, m.positions());
             if (m.normals() != null) putTexels(vertices, m.normals());
-            indices.put(m.triangles());
+            indices.put(next.meshTriangles.get(i));
         }
         vertices.position(0).limit(vertices.capacity());
         indices.position(0).limit(indices.capacity());
@@ -273,7 +293,11 @@ public final class LiveRenderer implements AutoCloseable {
         glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, meshIndexBuffer);
         glBufferData(GL_ELEMENT_ARRAY_BUFFER, indices, GL_STATIC_DRAW);
         glBindVertexArray(0);
-        lastUploadFloats += 4L * next.meshVertexTexels + next.meshIndexCount;
+        FloatBuffer nodes = BufferUtils.createFloatBuffer(Math.max(4, next.meshNodes.length));
+        nodes.put(next.meshNodes).position(0);
+        glBindBuffer(GL_TEXTURE_BUFFER, meshNodeBuffer);
+        glBufferData(GL_TEXTURE_BUFFER, nodes, GL_STATIC_DRAW);
+        lastUploadFloats += 4L * next.meshVertexTexels + next.meshIndexCount + next.meshNodes.length;
     }
 
     private static void putTexels(FloatBuffer out, double[] xyz) {
@@ -282,6 +306,33 @@ public final class LiveRenderer implements AutoCloseable {
 
     /** How many floats the last {@link #setScene} sent to the GPU (for tests and benchmarks). */
     public long lastUploadFloats() { return lastUploadFloats; }
+
+    /**
+     * Where each primitive kind's instances start among the one-primitive entities, bounded and
+     * unbounded (entry {@code KINDS} is the end): each kind is drawn by a program with only
+     * its own intersection code, since llvmpipe runs every kind's code for every pixel otherwise.
+     */
+    private final int[] boundedKindStart = new int[KINDS + 1], unboundedKindStart = new int[KINDS + 1];
+    private static final int KINDS = GpuScene.MESH + 1;
+
+    /** Instance records of the one-primitive entities [0, count) ordered by kind, the kinds' starts into {@code start}. */
+    private static ByteBuffer instancesByKind(GpuScene g, float[] boxes, int[] offsets, int count, int[] start) {
+        java.util.Arrays.fill(start, 0);
+        int[] kind = new int[count];
+        for (int i = 0; i < count; i++) {
+            kind[i] = (int) g.data[4 * (offsets[i] + GpuScene.HEADER_TEXELS + 1)];
+            start[kind[i] + 1]++;
+        }
+        for (int k = 0; k < KINDS; k++) start[k + 1] += start[k];
+        int[] next = java.util.Arrays.copyOf(start, KINDS);
+        ByteBuffer b = BufferUtils.createByteBuffer(Math.max(28, 28 * count));
+        for (int i = 0; i < count; i++) {
+            b.position(28 * next[kind[i]]++);
+            for (int k = 0; k < 6; k++) b.putFloat(boxes[6 * i + k]);
+            b.putInt(offsets[i]);
+        }
+        return b.position(0).limit(Math.max(28, 28 * count));
+    }
 
     /** Instance records (box min, box max, header offset) of entries [from, to). */
     private static ByteBuffer instances(float[] boxes, int[] offsets, int from, int to) {
@@ -413,22 +464,39 @@ public final class LiveRenderer implements AutoCloseable {
             glEnable(GL_CULL_FACE);
             glCullFace(GL_FRONT);
             glFrontFace(frontFace(view));
-            if (primitiveInstances > 0) {
-                useGeometryProgram(geometryProgram(true), view, x, glY, w, h, overlay, false);
-                glBindVertexArray(cubeVao);
-                glDrawArraysInstanced(GL_TRIANGLES, 0, 36, primitiveInstances);
+            glBindVertexArray(cubeVao);
+            glBindBuffer(GL_ARRAY_BUFFER, instanceVbo);
+            for (int k = 0; k < KINDS; k++) {
+                int from = boundedKindStart[k], count = boundedKindStart[k + 1] - from;
+                if (count == 0) continue;
+                useGeometryProgram(geometryProgram(true, k), view, x, glY, w, h, overlay, false);
+                instanceAttributes(28L * from);
+                glDrawArraysInstanced(GL_TRIANGLES, 0, 36, count);
             }
             if (csgInstances > 0) {
-                useGeometryProgram(geometryProgram(false), view, x, glY, w, h, overlay, false);
+                useGeometryProgram(geometryProgram(false, -1), view, x, glY, w, h, overlay, false);
                 glBindVertexArray(csgVao);
                 glDrawArraysInstanced(GL_TRIANGLES, 0, 36, csgInstances);
             }
             glDisable(GL_CULL_FACE);
         }
-        if (scene.unboundedOffsets.length > 0) {
-            useGeometryProgram(geometryProgram(false), view, x, glY, w, h, overlay, true);
+        int unboundedPrimitives = scene.unboundedPrimitives, unboundedCsg = scene.unboundedOffsets.length - unboundedPrimitives;
+        glBindVertexArray(fullVao);
+        glBindBuffer(GL_ARRAY_BUFFER, fullInstanceVbo);
+        for (int k = 0; k < KINDS; k++) {
+            int from = unboundedKindStart[k], count = unboundedKindStart[k + 1] - from;
+            if (count == 0) continue;
+            useGeometryProgram(geometryProgram(true, k), view, x, glY, w, h, overlay, true);
+            instanceAttributes(28L * from);
+            glDrawArraysInstanced(GL_TRIANGLES, 0, 3, count);
+        }
+        if (unboundedCsg > 0) {
+            // The CSG ones follow in the same instance buffer (no base instance in GL 3.3: the attributes start there).
+            useGeometryProgram(geometryProgram(false, -1), view, x, glY, w, h, overlay, true);
             glBindVertexArray(fullVao);
-            glDrawArraysInstanced(GL_TRIANGLES, 0, 3, scene.unboundedOffsets.length);
+            glBindBuffer(GL_ARRAY_BUFFER, fullInstanceVbo);
+            instanceAttributes(28L * unboundedPrimitives);
+            glDrawArraysInstanced(GL_TRIANGLES, 0, 3, unboundedCsg);
         }
         int meshes = scene.meshInstances.length / GpuScene.MESH_INSTANCE_INTS;
         if (meshes > 0) {
@@ -516,6 +584,7 @@ public final class LiveRenderer implements AutoCloseable {
         if ((scene.kinds & 1 << GpuScene.MESH) != 0) {
             bind(p, "meshVertices", 7, GL_TEXTURE_BUFFER, meshVertexTexture);
             bind(p, "meshIndices", 8, GL_TEXTURE_BUFFER, meshIndexTexture);
+            if (scene.meshNodes.length > 0) bind(p, "meshNodes", 9, GL_TEXTURE_BUFFER, meshNodeTexture);
         }
     }
 
@@ -644,9 +713,10 @@ public final class LiveRenderer implements AutoCloseable {
     @Override
     public void close() {
         deleteFramebuffers();
-        glDeleteTextures(new int[] {sceneTexture, directoryTexture, panoramaTexture, meshVertexTexture, meshIndexTexture});
+        glDeleteTextures(new int[] {sceneTexture, directoryTexture, panoramaTexture, meshVertexTexture, meshIndexTexture,
+            meshNodeTexture});
         glDeleteBuffers(new int[] {sceneBuffer, directoryBuffer, cubeVbo, instanceVbo, csgInstanceVbo, fullInstanceVbo,
-            meshVertexBuffer, meshIndexBuffer});
+            meshVertexBuffer, meshIndexBuffer, meshNodeBuffer});
         glDeleteVertexArrays(new int[] {cubeVao, csgVao, fullVao, meshVao});
         for (int p : geometryPrograms.values()) glDeleteProgram(p);
         for (int p : shadePrograms.values()) glDeleteProgram(p);

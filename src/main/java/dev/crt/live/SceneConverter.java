@@ -41,6 +41,10 @@ public final class SceneConverter {
     /** The distinct meshes met so far and their {vertex base, index base} in the mesh buffers. */
     private final Map<MeshData, int[]> meshBases = new IdentityHashMap<>();
     private final List<MeshData> meshes = new ArrayList<>();
+    /** Each mesh's triangles as sent (in its hierarchy's leaf order when it has one), and the hierarchies' node texels. */
+    private final List<int[]> meshTriangles = new ArrayList<>();
+    private float[] meshNodes = new float[0];
+    private int meshNodeTexels;
     private int meshVertexTexels, meshIndexCount;
     /** Top-level meshes: GpuScene.MESH_INSTANCE_INTS ints and 12 floats each. */
     private int[] meshInstances = new int[0];
@@ -64,8 +68,9 @@ public final class SceneConverter {
         int[] bounded = new int[n];
         float[] boxes = new float[6 * n];
         int nc = 0;
+        // Unbounded entities likewise: one-primitive ones (drawn without the CSG walk) first.
         int[] unbounded = new int[n];
-        int nb = 0, nu = 0;
+        int nb = 0, nu = 0, nuc = 0;
         Aabb all = Aabb.EMPTY;
         for (int i = 0; i < n; i++) {
             Entity e = entities.get(i);
@@ -83,8 +88,10 @@ public final class SceneConverter {
                 bounded[at] = offsets[i];
                 put(boxes, 6 * at, b);
                 all = all.union(b);
-            } else {
+            } else if (e instanceof Primitive) {
                 unbounded[nu++] = offsets[i];
+            } else {
+                unbounded[n - 1 - nuc++] = offsets[i];
             }
         }
         List<Light> sceneLights = scene.settings().lights();
@@ -102,9 +109,11 @@ public final class SceneConverter {
             boundedAll[nb + k] = bounded[n - nc + k];
             System.arraycopy(boxes, 6 * (n - nc + k), boxesAll, 6 * (nb + k), 6);
         }
-        return new GpuScene(data, size / 4, offsets, bounds, boundedAll, boxesAll, nb, Arrays.copyOf(unbounded, nu), lights, sceneLights.size(),
+        int[] unboundedAll = Arrays.copyOf(unbounded, nu + nuc);
+        System.arraycopy(unbounded, n - nuc, unboundedAll, nu, nuc);
+        return new GpuScene(data, size / 4, offsets, bounds, boundedAll, boxesAll, nb, unboundedAll, nu, tables, seesBackground, lights, sceneLights.size(),
                 scene.settings().background(), scene.settings().gamma(), scene.settings().camera(), all, kinds,
-                meshes, meshVertexTexels, meshIndexCount,
+                meshes, meshTriangles, Arrays.copyOf(meshNodes, 4 * meshNodeTexels), meshVertexTexels, meshIndexCount,
                 Arrays.copyOf(meshInstances, GpuScene.MESH_INSTANCE_INTS * meshInstanceCount),
                 Arrays.copyOf(meshMatrices, 12 * meshInstanceCount));
     }
@@ -182,12 +191,15 @@ public final class SceneConverter {
                     + " primitives; the entity at " + e.span() + " has " + leafCount);
         }
         reserve(4 * steps);
+        int programAt = size;
         for (int s = 0; s < steps; s++) {
             data[size++] = program[2 * s];
             data[size++] = program[2 * s + 1];
             data[size++] = 0;
             data[size++] = 0;
         }
+        if (leafCount <= GpuScene.TABLE_LEAVES) truthTable(programAt);
+        else tables = false;
         Aabb b = leaves(e, Transform.IDENTITY);
         double scale = b.isFinite() && !b.isEmpty()
                 ? Math.max(maxAbs(b.min()), maxAbs(b.max())) : 1;
@@ -204,6 +216,11 @@ public final class SceneConverter {
         data[header + 9] = finite ? (float) b.max().y() : 1e30f;
         data[header + 10] = finite ? (float) b.max().z() : 1e30f;
         data[header + 11] = 0;
+        if (e instanceof Plane) {
+            // A plane alone: its (normal, offset) in place of the bounds, so a shadow ray's bounds test is its crossing.
+            System.arraycopy(data, programAt + 4 * steps + 4, data, header + 8, 4);
+            data[header + 7] = 2;
+        }
         return b;
     }
 
@@ -226,6 +243,46 @@ public final class SceneConverter {
         } else {
             throw new UnsupportedSceneException("the live view cannot draw a " + kindName(e) + " yet");
         }
+    }
+
+    /** Whether a material so far reflects or lets light through (the shading then looks the background up in those directions). */
+    private boolean seesBackground;
+
+    /** Whether every entity so far has its truth table written (at most {@link GpuScene#TABLE_LEAVES} primitives). */
+    private boolean tables = true;
+
+    /**
+     * Writes the entity's CSG program as a truth table over its primitives: entry m tells whether a
+     * point inside exactly the primitives of bit mask m is inside the entity. Sixteen entries per
+     * float (exact as an integer), in the z and w of the program's texels from {@code at}: the
+     * shader reads one texel to tell inside from outside instead of running the program.
+     */
+    private void truthTable(int at) {
+        int entries = 1 << leafCount;
+        for (int chunk = 0; chunk * 16 < entries; chunk++) {
+            int bits = 0;
+            for (int k = 0; k < 16 && chunk * 16 + k < entries; k++) {
+                if (inside(chunk * 16 + k)) bits |= 1 << k;
+            }
+            data[at + 4 * (chunk >> 1) + 2 + (chunk & 1)] = bits;
+        }
+    }
+
+    /** The program run on the set of primitives of bit mask {@code mask}, as the shader's program walk runs it. */
+    private boolean inside(int mask) {
+        long stack = 0;
+        for (int s = 0; s < steps; s++) {
+            int op = program[2 * s];
+            if (op == GpuScene.OP_LEAF) {
+                stack = stack << 1 | (mask >> program[2 * s + 1] & 1);
+            } else {
+                long b = stack & 1, a = stack >> 1 & 1;
+                stack >>= 2;
+                long r = op == GpuScene.OP_UNION ? a | b : op == GpuScene.OP_INTERSECTION ? a & b : a & (b ^ 1);
+                stack = stack << 1 | r;
+            }
+        }
+        return (stack & 1) != 0;
     }
 
     private void step(int opcode, int leaf) {
@@ -330,20 +387,34 @@ public final class SceneConverter {
             throw new UnsupportedSceneException("the live view draws only closed meshes inside CSG; the mesh "
                     + data.name() + " at " + m.span() + " is open");
         }
-        if (inCsg && triangles > GpuScene.MESH_CAST_LIMIT) {
-            throw new UnsupportedSceneException("the live view draws meshes of at most " + GpuScene.MESH_CAST_LIMIT
+        if (inCsg && triangles > GpuScene.MESH_BVH_LIMIT) {
+            throw new UnsupportedSceneException("the live view draws meshes of at most " + GpuScene.MESH_BVH_LIMIT
                     + " triangles inside CSG; the mesh " + data.name() + " at " + m.span() + " has " + triangles);
         }
         boolean normals = m.smooth() && data.normals() != null;
         int[] base = meshBases.get(data);
         if (base == null) {
-            base = new int[] {meshVertexTexels, meshIndexCount};
+            int[] order = data.triangles();
+            int nodes = 0;
+            if (triangles > GpuScene.MESH_CAST_LIMIT && triangles <= GpuScene.MESH_BVH_LIMIT) {
+                // Too many to cast triangle by triangle: a hierarchy, its triangles in its leaves' order.
+                MeshBvh bvh = MeshBvh.of(data);
+                order = bvh.triangles;
+                nodes = meshNodeTexels + 1;
+                if (meshNodes.length < 4 * meshNodeTexels + bvh.nodes.length) {
+                    meshNodes = Arrays.copyOf(meshNodes, Math.max(2 * meshNodes.length, 4 * meshNodeTexels + bvh.nodes.length));
+                }
+                System.arraycopy(bvh.nodes, 0, meshNodes, 4 * meshNodeTexels, bvh.nodes.length);
+                meshNodeTexels += bvh.nodes.length / 4;
+            }
+            base = new int[] {meshVertexTexels, meshIndexCount, nodes};
             meshBases.put(data, base);
             meshes.add(data);
+            meshTriangles.add(order);
             meshVertexTexels += data.vertexCount() * (data.normals() != null ? 2 : 1);
             meshIndexCount += data.triangles().length;
             // The leaf holds the bases as floats: exact up to 2^24.
-            if (meshVertexTexels > 1 << 24 || meshIndexCount > 1 << 24) {
+            if (meshVertexTexels > 1 << 24 || meshIndexCount > 1 << 24 || meshNodeTexels > 1 << 24) {
                 throw new UnsupportedSceneException("the live view draws meshes of at most " + (1 << 24)
                         + " vertices and indices in all; this scene has more");
             }
@@ -353,7 +424,7 @@ public final class SceneConverter {
         texel(GpuScene.MESH, normals ? 1 : 0, base[0], base[1]);
         matrix(t.inverseMatrix());
         texel(triangles, data.closed() ? 1 : 0, data.vertexCount(), 0);
-        zeros(1);
+        texel(base[2], 0, 0, 0);
         material(m.material());
         if (!inCsg) {
             int n = meshInstanceCount++;
@@ -411,6 +482,7 @@ public final class SceneConverter {
     }
 
     private void material(Material m) {
+        if (m.reflectivity() > 0 || m.transparency() > 0) seesBackground = true;
         texel(m.color().r(), m.color().g(), m.color().b(), m.diffuse());
         texel(m.specular(), m.shininess(), m.transparency(), m.reflectivity());
         texel(m.emission().r(), m.emission().g(), m.emission().b(), 0);

@@ -50,5 +50,9 @@ vec3 backgroundColour(vec3 d) {
 }
 
 vec4 encode(vec3 c) {
+#ifdef LINEAR_OUTPUT
+    return vec4(clamp(c, 0.0, 1.0), 1.0);
+#else
     return vec4(pow(clamp(c, 0.0, 1.0), vec3(1.0 / gamma)), 1.0);
+#endif
 }

@@ -1,6 +1,10 @@
 // The geometry pass: the fragments of one entity's proxy ray-cast it and keep the nearest hit per
 // pixel (entity id, distance, the primitive's texel address); shading happens once per pixel after.
 flat in int entity;
+#ifdef PRIMITIVES
+flat in vec4 leafData[6];
+flat in int entityId;
+#endif
 layout(location = 0) out int id;
 layout(location = 1) out float depth;
 layout(location = 2) out int leafAddress;
@@ -13,20 +17,26 @@ void main() {
     float t;
     int leaf;
 #ifdef PRIMITIVES
-    // Entities that are one primitive: no CSG walk at all (llvmpipe runs both sides of branches).
+    // Entities that are one primitive: no CSG walk at all (llvmpipe runs both sides of branches),
+    // and the primitive's texels come from the vertex shader.
     float a, b;
-    // One primitive: the program is one step, so the primitive follows the header at once.
-    if (!leafSpan(entity + 4, ro, rd, a, b)) discard;
+    if (!span(leafData[0], leafData[1], leafData[2], leafData[3], leafData[4], leafData[5], ro, rd, a, b)) discard;
     t = firstAfter(a, b, 0.0);
     if (!(t > 0.0) || t == INF) discard;
     leaf = 0;
 #else
     if (walk(entity, ro, rd, 0.0, INF, false, t, leaf) == 0.0) discard;
 #endif
+#ifdef PRIMITIVES
+    // One primitive: the program is one step, so the primitive follows the header at once.
+    id = entityId + 1;
+    leafAddress = entity + 4;
+#else
     vec4 header = T(entity);
     id = int(header.z) + 1;
-    depth = t;
     leafAddress = entity + 3 + int(header.y) + leaf * LEAF_TEXELS;
+#endif
+    depth = t;
 #ifdef HAS_MESH
     face = faceHit;
 #else

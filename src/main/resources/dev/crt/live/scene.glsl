@@ -21,6 +21,9 @@ int evF[MAX_EVENTS];
 int faceHit;
 uniform samplerBuffer meshVertices;
 uniform isamplerBuffer meshIndices;
+#ifdef HAS_MESH_BVH
+uniform samplerBuffer meshNodes;
+#endif
 #endif
 #ifdef HAS_TORUS
 // A torus's second interval along the ray (leafSpan returns the first); INF when there is none.
@@ -230,34 +233,63 @@ void meshTriangle(int L, int f, out vec3 a, out vec3 b, out vec3 c) {
     c = texelFetch(meshVertices, vb + texelFetch(meshIndices, ib + 2).x).xyz;
 }
 
+// Triangle f of the mesh of leaf k at L against the line o + t d (mesh coordinates): a crossing
+// up to tMin toggles whether the line is inside at once, a later one before tMax is an event.
+void meshTriangleEvent(int k, int L, int f, vec3 o, vec3 d, float tMin, float tMax, inout uint mask, inout int n) {
+    vec3 a, b, c;
+    meshTriangle(L, f, a, b, c);
+    // Moller and Trumbore, edges inclusive.
+    vec3 e1 = b - a, e2 = c - a, pv = cross(d, e2);
+    float det = dot(e1, pv);
+    if (det == 0.0) return;
+    float inv = 1.0 / det;
+    vec3 tv = o - a;
+    float u = dot(tv, pv) * inv;
+    if (u < 0.0 || u > 1.0) return;
+    vec3 qv = cross(tv, e1);
+    float v = dot(d, qv) * inv;
+    if (v < 0.0 || u + v > 1.0) return;
+    float t = dot(e2, qv) * inv;
+    if (t <= tMin) {
+        mask ^= 1u << uint(k);
+    } else if (t < tMax && n < MAX_EVENTS) {
+        evT[n] = t; evL[n] = k; evF[n] = f; n++;
+    }
+}
+
 // Every crossing of the line o + t d (mesh coordinates) with the mesh of leaf k at L: each one
 // toggles whether the line is inside (a closed mesh's inside by parity, as the ray tracer's),
-// those up to tMin at once, the later ones as events. Meshes of more than MESH_CAST_LIMIT
-// triangles are not cast (they cast no shadows; the converter keeps them out of CSG).
-void meshEvents(int k, int L, vec3 o, vec3 d, float tMin, inout uint mask, inout int n) {
+// those up to tMin at once, the later ones before tMax as events. A mesh of more than
+// MESH_CAST_LIMIT triangles is walked through its hierarchy (MeshBvh): every node the line
+// meets, before tMin too, since the crossings there decide the inside at tMin.
+void meshEvents(int k, int L, vec3 o, vec3 d, float tMin, float tMax, inout uint mask, inout int n) {
     int count = int(T(L + 4).x);
-    if (count > MESH_CAST_LIMIT) return;
-    for (int f = 0; f < count; f++) {
-        vec3 a, b, c;
-        meshTriangle(L, f, a, b, c);
-        // Moller and Trumbore, edges inclusive.
-        vec3 e1 = b - a, e2 = c - a, pv = cross(d, e2);
-        float det = dot(e1, pv);
-        if (det == 0.0) continue;
-        float inv = 1.0 / det;
-        vec3 tv = o - a;
-        float u = dot(tv, pv) * inv;
-        if (u < 0.0 || u > 1.0) continue;
-        vec3 qv = cross(tv, e1);
-        float v = dot(d, qv) * inv;
-        if (v < 0.0 || u + v > 1.0) continue;
-        float t = dot(e2, qv) * inv;
-        if (t <= tMin) {
-            mask ^= 1u << uint(k);
-        } else if (n < MAX_EVENTS) {
-            evT[n] = t; evL[n] = k; evF[n] = f; n++;
+#ifdef HAS_MESH_BVH
+    int nodes = int(T(L + 5).x) - 1;
+    if (nodes >= 0) {
+        vec3 inv = 1.0 / mix(d, vec3(1e-30), equal(d, vec3(0.0)));
+        int stack[MESH_BVH_DEPTH];
+        int sp = 0, node = 0;
+        while (true) {
+            vec4 lo = texelFetch(meshNodes, nodes + 2 * node), hi = texelFetch(meshNodes, nodes + 2 * node + 1);
+            vec3 t0 = (lo.xyz - o) * inv, t1 = (hi.xyz - o) * inv;
+            vec3 tn = min(t0, t1), tf = max(t0, t1);
+            bool met = max(max(tn.x, tn.y), tn.z) <= min(min(tf.x, tf.y), tf.z) && max(max(tn.x, tn.y), tn.z) < tMax;
+            int first = int(lo.w), leafCount = int(hi.w);
+            for (int i = 0; met && i < leafCount; i++) meshTriangleEvent(k, L, first + i, o, d, tMin, tMax, mask, n);
+            if (met && leafCount == 0) {
+                stack[sp++] = first + 1;
+                node = first;
+            } else {
+                if (sp == 0) break;
+                node = stack[--sp];
+            }
         }
+        return;
     }
+#endif
+    if (count > MESH_CAST_LIMIT) return;
+    for (int f = 0; f < count; f++) meshTriangleEvent(k, L, f, o, d, tMin, tMax, mask, n);
 }
 
 // The winding normal of the triangle meshNormal last looked at, and how far the origin of its
@@ -298,15 +330,21 @@ vec3 meshNormal(int L, int f, vec3 q) {
 }
 #endif
 
-bool leafSpan(int L, vec3 ro, vec3 rd, out float a, out float b) {
+// The interval along the ray inside the primitive of texels hd, r0 to r2 (the matrix rows, or a
+// plane) and lo, hi (a box's corners), false if none; a torus's second interval in span2A, span2B.
+bool span(vec4 hd, vec4 r0, vec4 r1, vec4 r2, vec4 lo4, vec4 hi4, vec3 ro, vec3 rd, out float a, out float b) {
 #ifdef HAS_TORUS
     span2A = INF;
     span2B = INF;
 #endif
-    vec4 hd = T(L);
+#ifdef ONE_KIND
+    // A program for one kind of one-primitive entity: the other kinds' code folds away.
+    const int kind = ONE_KIND;
+#else
     int kind = int(hd.x);
+#endif
     if (kind == PLANE) {
-        vec4 pl = T(L + 1);
+        vec4 pl = r0;
         float dn = dot(pl.xyz, rd), on = dot(pl.xyz, ro);
         if (dn == 0.0) { a = -INF; b = INF; return on <= pl.w; }
         float t = (pl.w - on) / dn;
@@ -314,7 +352,6 @@ bool leafSpan(int L, vec3 ro, vec3 rd, out float a, out float b) {
         return true;
     }
     if (kind == EMPTY) return false;
-    vec4 r0 = T(L + 1), r1 = T(L + 2), r2 = T(L + 3);
     vec3 o = vec3(dot(r0.xyz, ro) + r0.w, dot(r1.xyz, ro) + r1.w, dot(r2.xyz, ro) + r2.w);
     vec3 d = vec3(dot(r0.xyz, rd), dot(r1.xyz, rd), dot(r2.xyz, rd));
 #ifdef HAS_CONE
@@ -336,7 +373,7 @@ bool leafSpan(int L, vec3 ro, vec3 rd, out float a, out float b) {
         b = max(t1, t2);
         return true;
     }
-    vec3 lo = T(L + 4).xyz, hi = T(L + 5).xyz;
+    vec3 lo = lo4.xyz, hi = hi4.xyz;
     // A ray parallel to a slab: a tiny component instead of 0 keeps the slab test branch-free (a
     // branch costs every pixel on llvmpipe) and gives ±huge distances of the right sign.
     vec3 inv = 1.0 / mix(d, vec3(1e-30), equal(d, vec3(0.0)));
@@ -347,7 +384,19 @@ bool leafSpan(int L, vec3 ro, vec3 rd, out float a, out float b) {
     return a <= b;
 }
 
+// The interval of primitive L along the ray (see span).
+bool leafSpan(int L, vec3 ro, vec3 rd, out float a, out float b) {
+    return span(T(L), T(L + 1), T(L + 2), T(L + 3), T(L + 4), T(L + 5), ro, rd, a, b);
+}
+
 bool inside(int program, int steps, uint mask) {
+#ifdef CSG_TABLE
+    // The program's truth table (SceneConverter.truthTable): one texel read instead of a loop over the program.
+    uint chunk = mask >> 4u;
+    vec4 entries = T(program + int(chunk >> 1u));
+    uint bits = uint((chunk & 1u) == 0u ? entries.z : entries.w);
+    return ((bits >> (mask & 15u)) & 1u) != 0u;
+#else
     uint stack = 0u;
     for (int s = 0; s < steps; s++) {
         vec4 p = T(program + s);
@@ -362,6 +411,7 @@ bool inside(int program, int steps, uint mask) {
         }
     }
     return (stack & 1u) != 0u;
+#endif
 }
 
 // First boundary of the entity at o with tMin < t < tMax (transmittance = false: returns 1 on a hit
@@ -404,7 +454,7 @@ float walk(int o, vec3 ro, vec3 rd, float tMin, float tMax, bool transmittance, 
             vec4 r0 = T(L + 1), r1 = T(L + 2), r2 = T(L + 3);
             vec3 o = vec3(dot(r0.xyz, ro) + r0.w, dot(r1.xyz, ro) + r1.w, dot(r2.xyz, ro) + r2.w);
             vec3 d = vec3(dot(r0.xyz, rd), dot(r1.xyz, rd), dot(r2.xyz, rd));
-            meshEvents(k, L, o, d, tMin, mask, n);
+            meshEvents(k, L, o, d, tMin, tMax, mask, n);
             continue;
         }
 #endif
@@ -520,12 +570,15 @@ vec3 normalAt(int L, int face, vec3 p) {
     return world;
 }
 
+// Whether the segment from ro to ro + tMax rd may meet a boundary of the entity at o: its bounds;
+// for an entity that is one plane, the plane itself (the walk counts its crossing there). Both
+// are computed and one kept: a branch costs every pixel its both sides on llvmpipe anyway.
 bool boxCrossed(int o, vec3 ro, vec3 rd, float tMax) {
     vec4 lo = T(o + 1), hi = T(o + 2);
-    if (lo.w != 0.0) return true;
     vec3 inv = 1.0 / rd;
     vec3 t0 = (lo.xyz - ro) * inv, t1 = (hi.xyz - ro) * inv;
     vec3 tn = min(t0, t1), tf = max(t0, t1);
     float a = max(max(tn.x, tn.y), tn.z), b = min(min(tf.x, tf.y), tf.z);
-    return !(a > b) && b > 0.0 && a < tMax;
+    float tp = (hi.w - dot(hi.xyz, ro)) / dot(hi.xyz, rd);
+    return lo.w == 0.0 ? !(a > b) && b > 0.0 && a < tMax : lo.w == 2.0 ? tp > 0.0 && tp < tMax : true;
 }

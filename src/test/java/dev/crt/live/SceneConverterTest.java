@@ -168,6 +168,51 @@ class SceneConverterTest {
         assertThat(g.bounds()).isEqualTo(new Aabb(new Vec3(-1, -1, -1), new Vec3(1, 1, 1)));
     }
 
+    @Test
+    void unboundedOnesAloneComeFirstAndALonePlaneKeepsItsPlaneInPlaceOfBounds() {
+        Csg cut = new Csg(CsgOperation.DIFFERENCE, PLANE, SPHERE, Transform.IDENTITY, SourceSpan.NONE);
+        Plane moved = new Plane(new Vec3(0, 1, 0), new Vec3(0, -1, 0), M, Transform.translation(new Vec3(0, 3, 0)),
+                SourceSpan.NONE);
+        GpuScene g = SceneConverter.convert(scene(List.of(cut, PLANE, BOX, moved), List.of(), Background.BLACK));
+        assertThat(g.unboundedOffsets).containsExactly(g.entityOffset[1], g.entityOffset[3], g.entityOffset[0]);
+        assertThat(g.unboundedPrimitives).isEqualTo(2);
+        float[] d = g.texelData();
+        int o = 4 * g.entityOffset[3];
+        // y = -1 moved up by 3: the plane y = 2, its normal (0, 1, 0) and offset 2.
+        assertThat(new float[] {d[o + 7], d[o + 8], d[o + 9], d[o + 10], d[o + 11]}).containsExactly(2, 0, 1, 0, 2);
+        assertThat(d[4 * g.entityOffset[0] + 7]).as("CSG reaching a half-space: unbounded, no plane").isEqualTo(1);
+        assertThat(d[4 * g.entityOffset[2] + 7]).as("bounded").isEqualTo(0);
+    }
+
+    @Test
+    void theTruthTableAgreesWithTheProgramOnEveryMask() {
+        // ((box - sphere) ^ plane) + sphere - box: five primitives, 32 entries in two floats.
+        Csg tree = new Csg(CsgOperation.DIFFERENCE,
+                new Csg(CsgOperation.UNION, new Csg(CsgOperation.INTERSECTION,
+                        new Csg(CsgOperation.DIFFERENCE, BOX, SPHERE, Transform.IDENTITY, SourceSpan.NONE), PLANE,
+                        Transform.IDENTITY, SourceSpan.NONE), SPHERE, Transform.IDENTITY, SourceSpan.NONE),
+                BOX, Transform.IDENTITY, SourceSpan.NONE);
+        GpuScene g = SceneConverter.convert(scene(List.of(tree), List.of(), Background.BLACK));
+        assertThat(g.tables).isTrue();
+        float[] d = g.texelData();
+        int p = 4 * (g.entityOffset[0] + GpuScene.HEADER_TEXELS);
+        for (int mask = 0; mask < 32; mask++) {
+            boolean box0 = (mask & 1) != 0, sphere1 = (mask & 2) != 0, plane2 = (mask & 4) != 0, sphere3 = (mask & 8) != 0,
+                    box4 = (mask & 16) != 0;
+            boolean expected = ((box0 && !sphere1 && plane2) || sphere3) && !box4;
+            int chunk = mask >> 4;
+            int bits = (int) d[p + 4 * (chunk >> 1) + 2 + (chunk & 1)];
+            assertThat((bits >> (mask & 15) & 1) != 0).as("mask %d", mask).isEqualTo(expected);
+        }
+    }
+
+    @Test
+    void csgOfMoreThanTablePrimitivesHasNoTable() {
+        Entity e = SPHERE;
+        for (int i = 0; i < GpuScene.TABLE_LEAVES; i++) e = new Csg(CsgOperation.UNION, e, BOX, Transform.IDENTITY, SourceSpan.NONE);
+        assertThat(SceneConverter.convert(scene(List.of(e), List.of(), Background.BLACK)).tables).isFalse();
+    }
+
     private static MeshData tetrahedron(int copies) {
         double[] p = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1};
         int[] one = {0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3};
@@ -198,19 +243,39 @@ class SceneConverterTest {
     }
 
     @Test
-    void meshesTheShaderCannotCastAreRefusedInCsgWithTheirPlace() {
+    void openMeshesAreRefusedInCsgWithTheirPlaceAndLargeOnesGetAHierarchy() {
         SourceSpan at = new SourceSpan("m.crt", 4, 9, 0, 1);
-        Mesh big = new Mesh(tetrahedron(GpuScene.MESH_CAST_LIMIT / 4 + 1), false, M, Transform.IDENTITY, at);
-        Scene s = scene(List.of(new Csg(CsgOperation.UNION, big, SPHERE, Transform.IDENTITY, at)), List.of(), Background.BLACK);
-        assertThatThrownBy(() -> SceneConverter.convert(s)).isInstanceOf(UnsupportedSceneException.class)
-                .hasMessage("the live view draws meshes of at most 256 triangles inside CSG; the mesh tetrahedron at m.crt:4:9 has 260");
+        MeshData many = MeshBvhTest.sphere(12, 12);
+        Mesh big = new Mesh(many, false, M, Transform.IDENTITY, at);
+        Scene s = scene(List.of(new Csg(CsgOperation.UNION, big, SPHERE, Transform.IDENTITY, at), SPHERE, big), List.of(),
+                Background.BLACK);
+        GpuScene g = SceneConverter.convert(s);
+        // Sent once, its triangles in the hierarchy's order; both leaves point at its nodes.
+        assertThat(g.meshes).hasSize(1);
+        assertThat(g.meshTriangles.get(0)).isEqualTo(MeshBvh.of(many).triangles);
+        assertThat(g.meshNodes).isEqualTo(MeshBvh.of(many).nodes);
+        float[] d = g.texelData();
+        int csgLeaf = 4 * (g.entityOffset[0] + GpuScene.HEADER_TEXELS + 3);
+        assertThat(d[csgLeaf]).isEqualTo(GpuScene.MESH);
+        assertThat(d[csgLeaf + 4 * 5]).as("node base + 1").isEqualTo(1);
+        assertThat(d[4 * g.meshInstances[1] + 4 * 5]).as("the top-level instance too").isEqualTo(1);
+        // Beyond the hierarchy's limit: refused inside CSG with its place, drawn alone without one.
+        Mesh huge = new Mesh(tetrahedron(GpuScene.MESH_BVH_LIMIT / 4 + 1), false, M, Transform.IDENTITY, at);
+        Scene h = scene(List.of(new Csg(CsgOperation.UNION, huge, SPHERE, Transform.IDENTITY, at)), List.of(), Background.BLACK);
+        assertThatThrownBy(() -> SceneConverter.convert(h)).isInstanceOf(UnsupportedSceneException.class)
+                .hasMessage("the live view draws meshes of at most 100000 triangles inside CSG; the mesh tetrahedron at m.crt:4:9"
+                        + " has 100004");
+        assertThat(SceneConverter.convert(scene(List.of(huge), List.of(), Background.BLACK)).meshNodes).isEmpty();
+        // A small mesh has none.
+        GpuScene small = SceneConverter.convert(scene(List.of(new Mesh(tetrahedron(1), false, M, Transform.IDENTITY, at)),
+                List.of(), Background.BLACK));
+        assertThat(small.meshNodes).isEmpty();
+        assertThat(small.texelData()[4 * small.meshInstances[1] + 4 * 5]).isEqualTo(0);
         MeshData open = new MeshData("sheet", new double[] {0, 0, 0, 1, 0, 0, 0, 1, 0}, new int[] {0, 1, 2}, null, null, false);
         Scene o = scene(List.of(new Csg(CsgOperation.UNION, new Mesh(open, false, M, Transform.IDENTITY, at), SPHERE,
                 Transform.IDENTITY, at)), List.of(), Background.BLACK);
         assertThatThrownBy(() -> SceneConverter.convert(o)).isInstanceOf(UnsupportedSceneException.class)
                 .hasMessage("the live view draws only closed meshes inside CSG; the mesh sheet at m.crt:4:9 is open");
-        // The same big mesh alone is drawn (rasterised).
-        assertThat(SceneConverter.convert(scene(List.of(big), List.of(), Background.BLACK)).meshInstances).hasSize(GpuScene.MESH_INSTANCE_INTS);
     }
 
     @Test
