@@ -24,9 +24,13 @@ version_cache=$(ls target/crt-*.aot target/crt-*.jsa 2>/dev/null | grep -v studi
 if [ -n "$version_cache" ]; then
   studio_cache="${version_cache%.*}-studio.${version_cache##*.}"
   if [ ! -f "$studio_cache" ] || [ "$studio_cache" -ot target/crt.jar ]; then
+    # A stale cache goes first: waiting below for "a cache" would otherwise return at once and
+    # time the studio beside its own training run.
+    rm -f "$studio_cache"
     XDG_CONFIG_HOME="$work/c0" XDG_STATE_HOME="$work/s0" CRT_JAVA_OPTS="-Xss16m -Dcrt.studio.quitWhenReady=true -Djava.util.prefs.userRoot=$work/p" \
       ./crt studio scenes/dice.crt >/dev/null 2>&1 || true
     for _ in $(seq 1 240); do [ -f "$studio_cache" ] && [ ! -f "$studio_cache.tmp" ] && break; sleep 0.5; done
+    [ -f "$studio_cache" ] || echo "the studio's start-up cache was not made (see target/studio-train/train.log)" >&2
   fi
 fi
 
