@@ -3,7 +3,7 @@
 # and prints the ratios of the medians (this / earlier; below 1.0 means this build is faster) of
 # the whole-process user + system CPU time and wall-clock time, and how far the pictures differ.
 #
-#   bench/jar-compare.sh --base OLD.jar [--runs N] [--out DIR] [--same-java] SCENE.crt [crt render options...]
+#   bench/jar-compare.sh --base OLD.jar [--runs N] [--out DIR] [--same-java] [--new-arg X]... SCENE.crt [crt render options...]
 #
 # The earlier build runs as `java -jar OLD.jar` with the java on the PATH (as its launcher did),
 # this one through ./crt (the newest Java it finds, with its start-up cache); --same-java runs the
@@ -11,7 +11,9 @@
 # Options after the scene go to both renders (--width, --height, --assets, --threads …).
 # CPU time is the figure to trust on a shared machine: others' work slows wall-clock time more.
 # Goal 1 of issue 10 (drops.crt of CRT 2015 at its shipped settings in ≤ 0.4× f05acbf's time):
-#   bench/jar-compare.sh --base f05acbf.jar DATA/drops.crt --assets DATA/assets
+#   bench/jar-compare.sh --base f05acbf.jar --new-arg --sampler --new-arg grid DATA/drops.crt --assets DATA/assets
+# (--new-arg X passes X to this build only: here f05acbf's sampling, since from 2 Dec 2026 a scene
+# with depth of field that names no sampler gets Sobol, a different picture of the same budget)
 set -euo pipefail
 
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
@@ -20,6 +22,7 @@ runs=3
 out="$here/results"
 base=""
 same=0
+new_only=()
 usage() { sed -n '2,16p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'; }
 while [ $# -gt 0 ]; do
   case "$1" in
@@ -27,6 +30,7 @@ while [ $# -gt 0 ]; do
     --runs) runs="$2"; shift 2 ;;
     --out) out="$2"; shift 2 ;;
     --same-java) same=1; shift ;;
+    --new-arg) new_only+=("$2"); shift 2 ;;
     -h|--help) usage; exit 0 ;;
     -*) echo "jar-compare: unknown option '$1'" >&2; usage >&2; exit 2 ;;
     *) break ;;
@@ -49,7 +53,7 @@ if [ "$same" = 1 ]; then
   # The java ./crt runs: the launcher prints its version; find that JDK the way the launcher does.
   base_java="$(bash -c 'source <(sed -n "/^java_version()/,/^fi$/p" "$1"); echo "$java"' _ "$root/crt")"
 fi
-new_cmd=("$root/crt" render "$scene" -o "$out/$name-new.png" --stats "$@")
+new_cmd=("$root/crt" render "$scene" -o "$out/$name-new.png" --stats "$@" ${new_only[@]+"${new_only[@]}"})
 base_cmd=("$base_java" -Xss16m -jar "$base" render "$scene" -o "$out/$name-base.png" --stats "$@")
 
 timed() { # runs a command; prints wall and user+system CPU seconds
