@@ -167,18 +167,7 @@ final class ObjectBuilder {
     private Value build(Plan plan) {
         Attributes a = new Attributes(evaluator, plan.typeName(), plan.typeSpan(), plan.objectSpan());
         String[] names = plan.names();
-        for (int i = 0; i < names.length; i++) {
-            try {
-                a.put(names[i], new Attributes.Given(evaluator.run(plan.values()[i]), plan.spans()[i]));
-            } catch (EvaluationStopped stop) {
-                throw stop;
-            } catch (ScriptError e) {
-                a.markFailed();
-                evaluator.report(e);
-            } catch (Failed f) {
-                a.markFailed();
-            }
-        }
+        for (int i = 0; i < names.length; i++) put(a, names[i], plan.values()[i], plan.spans()[i]);
         Value value = plan.type().build().apply(this, a);
         a.finish();
         return value;
@@ -206,18 +195,23 @@ final class ObjectBuilder {
                         + ":" + first.column() + ")", nameSpan));
                 continue;
             }
-            try {
-                a.put(name, new Attributes.Given(evaluator.evaluate(attr.expression()), at));
-            } catch (EvaluationStopped stop) {
-                throw stop;
-            } catch (ScriptError e) {
-                a.markFailed();
-                evaluator.report(e);
-            } catch (Failed f) {
-                a.markFailed();
-            }
+            put(a, name, () -> evaluator.evaluate(attr.expression()), at);
         }
         return a;
+    }
+
+    /** Evaluates one attribute into {@code a}; a failure is reported and marks the object failed, the others still run. */
+    private void put(Attributes a, String name, Evaluator.Code value, SourceSpan at) {
+        try {
+            a.put(name, new Attributes.Given(evaluator.run(value), at));
+        } catch (EvaluationStopped stop) {
+            throw stop;
+        } catch (ScriptError e) {
+            a.markFailed();
+            evaluator.report(e);
+        } catch (Failed f) {
+            a.markFailed();
+        }
     }
 
     private Value camera(Attributes a) {
