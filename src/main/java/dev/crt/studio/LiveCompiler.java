@@ -105,6 +105,8 @@ final class LiveCompiler implements StudioModel.Listener {
             }
             CompileResult done = result;
             long took = System.nanoTime() - began;
+            // The live view converts on the EDT; what is slow in that (large meshes' hierarchies) is done here.
+            if (done.scene() != null) dev.crt.live.SceneConverter.prepare(done.scene());
             SwingUtilities.invokeLater(() -> {
                 if (!timers.containsKey(d)) return;
                 compileNanos.put(d, took);

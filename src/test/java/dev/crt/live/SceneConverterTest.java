@@ -243,6 +243,23 @@ class SceneConverterTest {
     }
 
     @Test
+    void preparingASceneBuildsTheHierarchiesOfItsLargeMeshesAheadAndNoOthers() {
+        SourceSpan at = new SourceSpan("m.crt", 4, 9, 0, 1);
+        // Contents no other test uses, so that nothing has built them before.
+        MeshData inCsg = MeshBvhTest.sphere(13, 17), alone = MeshBvhTest.sphere(11, 19), small = tetrahedron(2);
+        Mesh a = new Mesh(inCsg, false, M, Transform.IDENTITY, at), b = new Mesh(alone, false, M, Transform.IDENTITY, at);
+        Mesh c = new Mesh(small, false, M, Transform.IDENTITY, at);
+        Scene s = scene(List.of(new Csg(CsgOperation.DIFFERENCE, SPHERE, new Csg(CsgOperation.UNION, SPHERE, a, Transform.IDENTITY, at),
+                Transform.IDENTITY, at), b, c), List.of(), Background.BLACK);
+        assertThat(MeshBvh.isBuilt(inCsg) || MeshBvh.isBuilt(alone)).isFalse();
+        SceneConverter.prepare(s);
+        assertThat(MeshBvh.isBuilt(inCsg)).as("a mesh deep in CSG").isTrue();
+        assertThat(MeshBvh.isBuilt(alone)).as("a mesh on its own").isTrue();
+        assertThat(MeshBvh.isBuilt(small)).as("a mesh cast triangle by triangle").isFalse();
+        assertThat(SceneConverter.convert(s).meshNodes).isNotEmpty();
+    }
+
+    @Test
     void openMeshesAreRefusedInCsgWithTheirPlaceAndLargeOnesGetAHierarchy() {
         SourceSpan at = new SourceSpan("m.crt", 4, 9, 0, 1);
         MeshData many = MeshBvhTest.sphere(12, 12);
