@@ -273,6 +273,7 @@ final class PropertiesPanel extends JPanel {
         @SuppressWarnings({"rawtypes", "unchecked"})
         PropertySupport.ReadWrite<Object> p = new PropertySupport.ReadWrite(spec.name(), valueClass(spec), name, note) {
             private Object current = value;
+            private PropertyEditor plainEditor;
 
             @Override public Object getValue() { return current; }
 
@@ -295,7 +296,10 @@ final class PropertiesPanel extends JPanel {
                     case VECTOR -> new ValueEditors.VectorEditor();
                     case COLOR -> new ValueEditors.ColorEditor();
                     case CHOICE -> new ValueEditors.ChoiceEditor(spec.choices());
-                    default -> super.getPropertyEditor();
+                    default -> {
+                        if (plainEditor == null) plainEditor = ValueEditors.plain(getValueType());
+                        yield plainEditor != null ? plainEditor : super.getPropertyEditor();
+                    }
                 };
             }
         };
@@ -305,6 +309,14 @@ final class PropertiesPanel extends JPanel {
     private static org.openide.nodes.Node.Property<String> text(String name, String value, String note) {
         return new PropertySupport.ReadOnly<>(name, String.class, name, note) {
             @Override public String getValue() { return value; }
+
+            private PropertyEditor plain;
+
+            @Override
+            public PropertyEditor getPropertyEditor() {
+                if (plain == null) plain = ValueEditors.plain(String.class);
+                return plain != null ? plain : super.getPropertyEditor();
+            }
         };
     }
 

@@ -105,6 +105,7 @@ final class StudioWindow implements StudioModel.Listener {
     private final TransferHandler fileDrop;
     private IntConsumer onExit = code -> {};
     private Runnable firstPaint;
+    private boolean painted;
     private RenderJob job;
     /** The Navigator and Properties panels and the Insert menu (issue 8). */
     private ObjectPanels objects;
@@ -140,6 +141,11 @@ final class StudioWindow implements StudioModel.Listener {
         JPanel root = new JPanel(new BorderLayout()) {
             @Override public void paint(java.awt.Graphics g) {
                 super.paint(g);
+                if (!painted) {
+                    painted = true;
+                    // While the artist looks at the window, not when a compile first selects an object.
+                    ValueEditors.findPlainEditorsInBackground();
+                }
                 Runnable r = firstPaint;
                 firstPaint = null;
                 if (r != null) r.run();
