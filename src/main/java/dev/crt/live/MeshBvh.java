@@ -61,12 +61,12 @@ final class MeshBvh {
         this.nodes = nodes;
     }
 
-    /** The hierarchy of {@code mesh}, built once for the same positions and triangles (a recompile that keeps the mesh keeps it). */
     /** Whether the hierarchy of {@code mesh}'s content is built and kept (no build if not). */
     static boolean isBuilt(MeshData mesh) {
         return BUILT.containsKey(new Content(mesh));
     }
 
+    /** The hierarchy of {@code mesh}, built once for the same positions and triangles (a recompile that keeps the mesh keeps it). */
     static MeshBvh of(MeshData mesh) {
         return BUILT.computeIfAbsent(new Content(mesh), c -> build(mesh));
     }

@@ -25,7 +25,7 @@ final class ValueEditors {
     private ValueEditors() {}
 
     /** The types of the sheet's rows that take the JDK's own editors (numbers, booleans, text). */
-    static final List<Class<?>> PLAIN_TYPES = List.of(Double.class, Integer.class, Boolean.class, String.class);
+    private static final List<Class<?>> PLAIN_TYPES = List.of(Double.class, Integer.class, Boolean.class, String.class);
 
     /** The editor class java.beans found for each type: looked up once, not at every row painted. */
     private static final java.util.Map<Class<?>, Class<? extends java.beans.PropertyEditor>> PLAIN =

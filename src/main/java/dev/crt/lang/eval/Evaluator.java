@@ -303,9 +303,6 @@ public final class Evaluator extends CRTBaseVisitor<Value> {
         return code;
     }
 
-    /** Runs a compiled expression (the same as {@link #evaluate} of its source inside a loop). */
-    Value run(Code code) { return code.run(); }
-
     /**
      * Evaluates an expression. At the top level it runs once, so it is visited directly; inside
      * loops and macros it is compiled once into closures, which skip the parse tree's wrapper

@@ -203,7 +203,7 @@ final class ObjectBuilder {
     /** Evaluates one attribute into {@code a}; a failure is reported and marks the object failed, the others still run. */
     private void put(Attributes a, String name, Evaluator.Code value, SourceSpan at) {
         try {
-            a.put(name, new Attributes.Given(evaluator.run(value), at));
+            a.put(name, new Attributes.Given(value.run(), at));
         } catch (EvaluationStopped stop) {
             throw stop;
         } catch (ScriptError e) {
