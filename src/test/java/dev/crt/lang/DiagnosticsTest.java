@@ -60,6 +60,18 @@ class DiagnosticsTest {
     }
 
     @Test
+    void anAttributeWhoseValueFailsIsNotAlsoReportedMissing() {
+        // The value's own mistake is the one diagnostic: the attribute is written, not missing.
+        at(error("b = Box { cornerA -> vec3(0,0,0) cornerB -> vec3(1, rand(), 1) }\n"), 1, 53,
+                "rand takes 2 arguments, rand(number, number), got 0");
+        at(error("b = Box { cornerA -> vec3(0,0,0) cornerB -> Material { ior -> 0 } }\n"), 1, 56, "ior must be > 0, got 0");
+        at(error("m = Mesh { vertices -> [vec3(0,0,0), vec3(1,0,0), nowhere] faces -> [[0, 1, 2]] }\n"), 1, 51,
+                "variable 'nowhere' is not assigned");
+        at(error("g = Background { horizon -> rgb(1, 1, 1) sky -> rgb(0, 0, nowhere) }\n"), 1, 59,
+                "variable 'nowhere' is not assigned");
+    }
+
+    @Test
     void wrongAttributeType() {
         at(error("s = Sphere { center -> rgb(1, 0, 0) }\n"), 1, 14, "attribute 'center' of Sphere expects a vec3, got rgb");
         at(error("s = Sphere { material -> 3 }\n"), 1, 14, "attribute 'material' of Sphere expects a material, got number");

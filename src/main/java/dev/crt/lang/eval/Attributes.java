@@ -57,6 +57,9 @@ final class Attributes {
     private int size;
     private final SourceSpan objectSpan;
     private boolean failed;
+    // Attributes written whose value failed (already reported there): not "missing" as well.
+    private String[] broken;
+    private int brokenCount;
 
     Attributes(Evaluator evaluator, String type, SourceSpan typeSpan, SourceSpan objectSpan) {
         this.evaluator = evaluator;
@@ -84,6 +87,22 @@ final class Attributes {
     }
 
     void markFailed() { failed = true; }
+
+    /** Marks the object failed because the value written for {@code name} failed (and was reported). */
+    void markFailed(String name) {
+        failed = true;
+        if (broken == null) broken = new String[2];
+        else if (brokenCount == broken.length) broken = java.util.Arrays.copyOf(broken, brokenCount * 2);
+        broken[brokenCount++] = name;
+    }
+
+    private boolean broken(String name) {
+        for (int i = 0; i < brokenCount; i++) if (broken[i].equals(name)) return true;
+        return false;
+    }
+
+    /** Whether {@code name} is written at all, also when its value failed (for checks of which attributes go together). */
+    boolean written(String name) { return find(name) != null || broken(name); }
 
     boolean has(String name) { return find(name) != null; }
 
@@ -117,7 +136,7 @@ final class Attributes {
         Given g = find(name);
         if (g != null) return g.value();
         failed = true;
-        evaluator.report(evaluator.error(type + " needs the attribute '" + name + "'", typeSpan));
+        if (!broken(name)) evaluator.report(evaluator.error(type + " needs the attribute '" + name + "'", typeSpan));
         return null;
     }
 

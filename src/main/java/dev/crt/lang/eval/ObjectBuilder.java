@@ -207,10 +207,10 @@ final class ObjectBuilder {
         } catch (EvaluationStopped stop) {
             throw stop;
         } catch (ScriptError e) {
-            a.markFailed();
+            a.markFailed(name);
             evaluator.report(e);
         } catch (Failed f) {
-            a.markFailed();
+            a.markFailed(name);
         }
     }
 
@@ -410,10 +410,10 @@ final class ObjectBuilder {
     private Value mesh(Attributes a) {
         boolean smooth = a.bool("smooth", true);
         MeshData data = null;
-        if (a.has("file") == (a.has("vertices") || a.has("faces"))) {
-            String at = a.has("file") ? "file" : "";
+        if (a.written("file") == (a.written("vertices") || a.written("faces"))) {
+            String at = a.written("file") ? "file" : "";
             a.error(at, "a Mesh takes either file, or vertices with faces");
-        } else if (a.has("file")) {
+        } else if (a.written("file")) {
             String file = a.string("file", null);
             if (file != null) {
                 try {
@@ -422,9 +422,9 @@ final class ObjectBuilder {
                     a.error("file", problem.getMessage());
                 }
             }
-        } else if (!a.has("vertices") || !a.has("faces")) {
-            a.error(a.has("vertices") ? "vertices" : "faces", "an inline Mesh needs both vertices and faces");
-        } else {
+        } else if (!a.written("vertices") || !a.written("faces")) {
+            a.error(a.written("vertices") ? "vertices" : "faces", "an inline Mesh needs both vertices and faces");
+        } else if (a.has("vertices") && a.has("faces")) {
             data = inlineMesh(a);
         }
         if (data == null) {
@@ -507,16 +507,16 @@ final class ObjectBuilder {
 
     private Value background(Attributes a) {
         List<String> forms = new ArrayList<>();
-        if (a.has("color")) forms.add("color");
-        if (a.has("horizon") || a.has("sky")) forms.add("horizon and sky");
-        if (a.has("image")) forms.add("image");
+        if (a.written("color")) forms.add("color");
+        if (a.written("horizon") || a.written("sky")) forms.add("horizon and sky");
+        if (a.written("image")) forms.add("image");
         if (forms.size() != 1) {
             String got = forms.isEmpty() ? "none" : String.join(" and ", forms);
             String at = a.names().isEmpty() ? null : a.names().get(0);
             a.error(at == null ? "" : at, "a Background takes exactly one of: color, horizon with sky, or image (with angle); got " + got);
             return new BackgroundValue(Background.BLACK);
         }
-        if (a.has("angle") && !a.has("image")) a.error("angle", "angle only goes with image");
+        if (a.written("angle") && !a.written("image")) a.error("angle", "angle only goes with image");
         Background background = switch (forms.get(0)) {
             case "color" -> new SolidBackground(a.color("color", Rgb.BLACK));
             case "image" -> panorama(a);
@@ -526,8 +526,8 @@ final class ObjectBuilder {
     }
 
     private Background gradient(Attributes a) {
-        if (!a.has("horizon")) a.error("sky", "a Background with sky needs horizon too");
-        if (!a.has("sky")) a.error("horizon", "a Background with horizon needs sky too");
+        if (!a.written("horizon")) a.error("sky", "a Background with sky needs horizon too");
+        if (!a.written("sky")) a.error("horizon", "a Background with horizon needs sky too");
         return new GradientBackground(a.color("horizon", Rgb.BLACK), a.color("sky", Rgb.BLACK));
     }
 
