@@ -79,7 +79,7 @@ final class QuickParser {
             StatementContext statement = kept.get(next);
             if (statement == null) {
                 parser.p = starts[next];
-                statement = parser.statement(null);
+                statement = parser.topLevelStatement();
             } else {
                 kept.set(next, null);
             }
@@ -92,6 +92,8 @@ final class QuickParser {
     }
 
     private final String text;
+    // Whether top-level object literals of plain values are left as their tokens (WrittenStatement).
+    private final boolean written;
     // Null once the reading is done: a statement built again when it runs was already timed.
     private ParseClock clock;
     private ScriptToken[] tokens = new ScriptToken[1024];
@@ -100,20 +102,37 @@ final class QuickParser {
     // Names by their characters, so that each distinct name is one String however often it occurs.
     private String[] names = new String[256];
 
-    private QuickParser(String text, ParseClock clock) {
+    private QuickParser(String text, ParseClock clock, boolean written) {
         this.text = text;
         this.clock = clock;
+        this.written = written;
+    }
+
+    /** A reader of the tokens of one {@link WrittenStatement}, which builds its parse tree. */
+    QuickParser(String text, ScriptToken[] tokens) {
+        this(text, null, false);
+        this.tokens = tokens;
+        this.count = tokens.length;
     }
 
     /**
      * The parse of {@code text}, or null when it has a mistake (or characters beyond the Basic
      * Multilingual Plane, whose code-point positions the generated lexer counts).
      */
-    static Result parse(String text, ParseClock clock) { return parse(text, clock, KEPT_TOKENS); }
+    static Result parse(String text, ParseClock clock) { return parse(text, clock, KEPT_TOKENS, false); }
+
+    /**
+     * The same; with {@code written}, a top-level statement (or one directly in a top-level Scene
+     * block) that is an object literal of plain values, or an assignment of one, is a
+     * {@link WrittenStatement}: its tokens, no tree.
+     */
+    static Result parse(String text, ParseClock clock, boolean written) { return parse(text, clock, KEPT_TOKENS, written); }
 
     /** The same, keeping from the reading the trees of the statements that start within {@code keptTokens} tokens. */
-    static Result parse(String text, ParseClock clock, int keptTokens) {
-        QuickParser parser = new QuickParser(text, clock);
+    static Result parse(String text, ParseClock clock, int keptTokens) { return parse(text, clock, keptTokens, false); }
+
+    private static Result parse(String text, ParseClock clock, int keptTokens, boolean written) {
+        QuickParser parser = new QuickParser(text, clock, written);
         try {
             if (!parser.lex()) return null;
             List<StatementContext> kept = new ArrayList<>();
@@ -123,7 +142,7 @@ final class QuickParser {
                 if (n == starts.length) starts = Arrays.copyOf(starts, n * 2);
                 int start = parser.p;
                 starts[n++] = start;
-                StatementContext statement = parser.statement(null);
+                StatementContext statement = parser.topLevelStatement();
                 kept.add(start < keptTokens ? statement : null);
             }
             parser.clock = null;
@@ -391,7 +410,7 @@ final class QuickParser {
                 List<ParseTree> children = new ArrayList<>();
                 children.add(take(c));
                 children.add(take(c, LBRACE));
-                while (startsStatement(type())) children.add(statement(c));
+                while (startsStatement(type())) children.add(parent == null ? topLevelStatement(c) : statement(c));
                 children.add(take(c, RBRACE));
                 return close(c, List.copyOf(children));
             }
@@ -412,6 +431,106 @@ final class QuickParser {
                 return close(c, List.of(expression(c)));
             }
         }
+    }
+
+    /** A statement at the top level or directly in a top-level Scene block ({@code parent}). */
+    private StatementContext topLevelStatement(ParserRuleContext parent) {
+        if (written) {
+            StatementContext w = writtenStatement(parent);
+            if (w != null) return w;
+        }
+        return statement(parent);
+    }
+
+    private StatementContext topLevelStatement() { return topLevelStatement(null); }
+
+    // ---- written-out objects --------------------------------------------------------------------
+    //
+    // Exporters write scenes as thousands of `Type { attr -> value … }` literals whose values are
+    // numbers, vec3(…)/rgb(…)-like calls of numbers, names, strings and nested literals of the same
+    // kind. Such a statement is checked here by a scan of its tokens (it is then exactly what the
+    // grammar accepts) and kept as its tokens: the evaluator builds it from them, and builds its
+    // tree only if it must report something.
+
+    /** The statement at the current token as a {@link WrittenStatement}, or null (nothing read). */
+    private StatementContext writtenStatement(ParserRuleContext parent) {
+        int at = p;
+        boolean assigns = type() == IDENT && typeAfter() == ASSIGN;
+        if (assigns) {
+            // Assigning 't' is a mistake the general path reports.
+            if (tokens[p].getText().equals("t")) return null;
+            at += 2;
+        }
+        if (typeAt(at) != NAME) return null;
+        int end = scanObject(at);
+        if (end < 0 || continuesExpression(typeAt(end))) return null;
+        if (clock != null) for (int i = p; i < end; i++) clock.tick(tokens[i]);
+        // The token after the statement goes along: the tree, when built, looks at it to end the statement.
+        WrittenStatement statement = new WrittenStatement(text, Arrays.copyOfRange(tokens, p, end + 1), parent, assigns);
+        p = end;
+        return statement;
+    }
+
+    private int typeAt(int i) { return tokens[i].getType(); }
+
+    /** The index after the object literal starting at {@code i} (its type name), or -1 if it is not plain. */
+    private int scanObject(int i) {
+        if (typeAt(i + 1) != LBRACE) return -1;
+        i += 2;
+        while (true) {
+            int type = typeAt(i);
+            if (type == RBRACE) return i + 1;
+            if (!startsAttribute(type) || typeAt(i + 1) != ARROW) return -1;
+            i = scanValue(i + 2);
+            if (i < 0) return -1;
+        }
+    }
+
+    /** The index after the plain value starting at {@code i}, or -1. */
+    private int scanValue(int i) {
+        switch (typeAt(i)) {
+            case PLUS, MINUS -> {
+                int t = typeAt(i + 1);
+                return t == INT || t == FLOAT ? i + 2 : -1;
+            }
+            case INT, FLOAT, STRING, TRUE, FALSE -> {
+                return i + 1;
+            }
+            case IDENT -> {
+                if (typeAt(i + 1) != LPAREN) return i + 1;
+                i += 2;
+                if (typeAt(i) == RPAREN) return i + 1;
+                while (true) {
+                    int t = typeAt(i);
+                    if (t == PLUS || t == MINUS) t = typeAt(++i);
+                    if (t != INT && t != FLOAT) return -1;
+                    t = typeAt(++i);
+                    if (t == RPAREN) return i + 1;
+                    if (t != COMMA) return -1;
+                    i++;
+                }
+            }
+            case NAME -> {
+                return scanObject(i);
+            }
+            default -> {
+                return -1;
+            }
+        }
+    }
+
+    /** Whether a token of this type after an operand continues the expression (an operator, a call, an index). */
+    private static boolean continuesExpression(int type) {
+        return switch (type) {
+            case LE, GE, LT, GT, EQ, NE, AND, OR, QUESTION, STAR, SLASH, PERCENT, PLUS, MINUS, CARET, LBRACKET, LPAREN -> true;
+            default -> false;
+        };
+    }
+
+    /** The parse tree of a {@link WrittenStatement}'s tokens, as the general reading builds it. */
+    StatementContext tree(ParserRuleContext parent) {
+        p = 0;
+        return statement(parent);
     }
 
     private IfChainContext ifChain(ParserRuleContext parent) {
