@@ -197,7 +197,9 @@ public final class Evaluator extends CRTBaseVisitor<Value> {
             } else if (w.assigns()) {
                 scope().put(w.assignedName(), value);
             } else if (place == Place.SCENE) {
-                placeInScene(value, w);
+                // The tree only for the span of a mistake.
+                if (value instanceof EntityValue e) placed.add(e);
+                else placeInScene(value, ((CRTParser.ExpressionStatementContext) w.tree()).expression());
             } else if (place == Place.MACRO) {
                 contribute(value, out);
             }
