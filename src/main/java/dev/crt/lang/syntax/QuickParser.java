@@ -117,8 +117,6 @@ final class QuickParser {
         this.written = written;
     }
 
-
-
     /**
      * The parse of {@code text}, or null when it has a mistake (or characters beyond the Basic
      * Multilingual Plane, whose code-point positions the generated lexer counts).
