@@ -78,6 +78,17 @@ class WrittenObjectsTest {
         assertSame(Source.of("exported.crt", text), CompileOptions.DEFAULT);
     }
 
+    @Test
+    void literalsNestedDeeplyAreLeftToTheGeneralReading() {
+        String deep = "Sphere { material -> Material { color -> Checker { color1 -> rgb(1, 0, 0) } } }";
+        assertThat(writtenStatements("Scene { " + deep + " }")).isEqualTo(1);
+        StringBuilder absurd = new StringBuilder("Scene { ");
+        for (int i = 0; i < 40; i++) absurd.append("Sphere { material -> ");
+        absurd.append("m").append(" }".repeat(40)).append(" }");
+        assertThat(writtenStatements(absurd.toString())).isZero();
+        assertSame(Source.of("deep.crt", "m = Material { }\n" + absurd), CompileOptions.DEFAULT);
+    }
+
     /** Compiles both ways, asserts the outcomes equal, and returns the new path's. */
     private static CompileResult assertSame(Source source, CompileOptions options) {
         CompileResult general = CrtCompiler.compile(source, options, false);

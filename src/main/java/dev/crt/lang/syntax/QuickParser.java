@@ -504,7 +504,7 @@ final class QuickParser {
             at += 2;
         }
         if (typeAt(at) != NAME) return null;
-        int end = scanObject(at);
+        int end = scanObject(at, 0);
         if (end < 0 || continuesExpression(typeAt(end))) return null;
         if (clock != null) for (int i = p; i < end; i++) if (clock.due()) clock.check(token(i));
         WrittenStatement statement = new WrittenStatement(this, p, end, parent, assigns);
@@ -514,21 +514,25 @@ final class QuickParser {
 
     private int typeAt(int i) { return types[i]; }
 
+    // Literals nested deeper are left to the general reading, so that an absurdly deep one fails
+    // where it always did (the scan needs less stack than the reading of its tree).
+    private static final int MAX_WRITTEN_DEPTH = 32;
+
     /** The index after the object literal starting at {@code i} (its type name), or -1 if it is not plain. */
-    private int scanObject(int i) {
+    private int scanObject(int i, int depth) {
         if (typeAt(i + 1) != LBRACE) return -1;
         i += 2;
         while (true) {
             int type = typeAt(i);
             if (type == RBRACE) return i + 1;
             if (!startsAttribute(type) || typeAt(i + 1) != ARROW) return -1;
-            i = scanValue(i + 2);
+            i = scanValue(i + 2, depth);
             if (i < 0) return -1;
         }
     }
 
     /** The index after the plain value starting at {@code i}, or -1. */
-    private int scanValue(int i) {
+    private int scanValue(int i, int depth) {
         switch (typeAt(i)) {
             case PLUS, MINUS -> {
                 int t = typeAt(i + 1);
@@ -552,7 +556,7 @@ final class QuickParser {
                 }
             }
             case NAME -> {
-                return scanObject(i);
+                return depth < MAX_WRITTEN_DEPTH ? scanObject(i, depth + 1) : -1;
             }
             default -> {
                 return -1;
