@@ -18,10 +18,16 @@ public final class CrtCompiler {
 
     private CrtCompiler() {}
 
-    public static CompileResult compile(Source source, CompileOptions options) {
+    public static CompileResult compile(Source source, CompileOptions options) { return compile(source, options, true); }
+
+    /**
+     * The same; {@code fromTokens} lets top-level object literals of plain values be built from
+     * their tokens (as always outside tests, which compare that with the general path, false).
+     */
+    static CompileResult compile(Source source, CompileOptions options, boolean fromTokens) {
         AtomicReference<CompileResult> result = new AtomicReference<>();
         AtomicReference<Evaluator> running = new AtomicReference<>();
-        Thread worker = new Thread(null, () -> result.set(compileHere(source, options, running)),
+        Thread worker = new Thread(null, () -> result.set(compileHere(source, options, fromTokens, running)),
                 "crt-compile", STACK_BYTES);
         worker.setDaemon(true);
         worker.start();
@@ -42,7 +48,8 @@ public final class CrtCompiler {
         return r != null ? r : failure(source, "internal error: the compile ended without a result");
     }
 
-    private static CompileResult compileHere(Source source, CompileOptions options, AtomicReference<Evaluator> running) {
+    private static CompileResult compileHere(Source source, CompileOptions options, boolean fromTokens,
+            AtomicReference<Evaluator> running) {
         String name = source.name() == null ? "script" : source.name();
         String text = source.text() == null ? "" : source.text();
         TextPositions positions = new TextPositions(name, text);
@@ -52,7 +59,9 @@ public final class CrtCompiler {
         }
         try {
             long started = System.nanoTime();
-            ScriptParser.Parsed parsed = ScriptParser.parse(positions, new ParseClock(started, options.timeBudget()));
+            // A source map describes objects from their trees: its compiles build every tree.
+            ScriptParser.Parsed parsed = ScriptParser.parse(positions, new ParseClock(started, options.timeBudget()),
+                    fromTokens && !options.sourceMap());
             if (parsed.statements() == null) return new CompileResult(null, parsed.errors());
             Path folder = source.file() == null ? null : source.file().toAbsolutePath().getParent();
             Evaluator evaluator = new Evaluator(positions, options, folder, started);

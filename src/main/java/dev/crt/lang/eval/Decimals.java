@@ -19,18 +19,21 @@ final class Decimals {
 
     private Decimals() {}
 
-    static double parse(String s) {
-        int n = s.length();
+    static double parse(String s) { return parse(s, 0, s.length()); }
+
+    /** The number written in {@code s} from {@code from} to {@code to} (exclusive), without cutting it out. */
+    static double parse(String s, int from, int to) {
+        int n = to;
         long digits = 0;
         int significant = 0;
         int scale = 0;
-        int i = 0;
+        int i = from;
         boolean fraction = false;
         for (; i < n; i++) {
             char c = s.charAt(i);
             if (c >= '0' && c <= '9') {
                 if (significant > 0 || c != '0') significant++;
-                if (significant > 15) return Double.parseDouble(s);
+                if (significant > 15) return Double.parseDouble(s.substring(from, to));
                 digits = digits * 10 + (c - '0');
                 if (fraction) scale--;
             } else if (c == '.' && !fraction) {
@@ -41,21 +44,21 @@ final class Decimals {
         }
         if (i < n) {
             char c = s.charAt(i);
-            if (c != 'e' && c != 'E') return Double.parseDouble(s);
+            if (c != 'e' && c != 'E') return Double.parseDouble(s.substring(from, to));
             int j = i + 1;
             boolean negative = false;
             if (j < n && (s.charAt(j) == '+' || s.charAt(j) == '-')) negative = s.charAt(j++) == '-';
-            if (j >= n || j + 3 < n) return Double.parseDouble(s);
+            if (j >= n || j + 3 < n) return Double.parseDouble(s.substring(from, to));
             int exponent = 0;
             for (; j < n; j++) {
                 char d = s.charAt(j);
-                if (d < '0' || d > '9') return Double.parseDouble(s);
+                if (d < '0' || d > '9') return Double.parseDouble(s.substring(from, to));
                 exponent = exponent * 10 + (d - '0');
             }
             scale += negative ? -exponent : exponent;
         }
         if (digits == 0) return 0.0; // a token has no sign: zero is +0.0
-        if (scale < -22 || scale > 22) return Double.parseDouble(s);
+        if (scale < -22 || scale > 22) return Double.parseDouble(s.substring(from, to));
         return scale < 0 ? digits / POWERS[-scale] : digits * POWERS[scale];
     }
 }

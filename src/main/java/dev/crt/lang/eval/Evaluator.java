@@ -8,6 +8,7 @@ import dev.crt.lang.Severity;
 import dev.crt.lang.TextPositions;
 import dev.crt.lang.parser.CRTBaseVisitor;
 import dev.crt.lang.parser.CRTParser;
+import dev.crt.lang.syntax.WrittenStatement;
 import dev.crt.lang.value.BooleanValue;
 import dev.crt.lang.value.ColorValue;
 import dev.crt.lang.value.EntityValue;
@@ -63,6 +64,7 @@ public final class Evaluator extends CRTBaseVisitor<Value> {
     private boolean ranOutOfMemory;
     private final Random random = new Random(RANDOM_SEED);
     private final ObjectBuilder objects;
+    private final WrittenObjects written;
     private final SettingsState settings;
     private final List<Diagnostic> diagnostics = new ArrayList<>();
     private final Set<String> warned = new HashSet<>();
@@ -83,6 +85,7 @@ public final class Evaluator extends CRTBaseVisitor<Value> {
         this.positions = positions;
         this.budget = new Budget(options.loopBudget(), options.timeBudget(), startNanos);
         this.objects = new ObjectBuilder(this, new Assets(scriptFolder, options.assetDirs()));
+        this.written = new WrittenObjects(this, objects, positions);
         this.settings = new SettingsState();
         this.recorder = options.sourceMap() ? new SourceRecorder(this, positions.text()) : null;
         // A whole time (every frame number of crt animate) is an integer, so `xs[t]` and `t % 2` work.
@@ -170,6 +173,10 @@ public final class Evaluator extends CRTBaseVisitor<Value> {
 
     /** A failed assignment leaves its variable failed, so reading it later adds no second error. */
     private void markFailed(CRTParser.StatementContext statement) {
+        if (statement instanceof WrittenStatement w) {
+            if (w.assigns()) scope().put(w.assignedName(), null);
+            return;
+        }
         if (statement instanceof CRTParser.ExpressionStatementContext s
                 && s.expression() instanceof CRTParser.AssignmentContext a) {
             String name = a.IDENT().getText();
@@ -182,6 +189,22 @@ public final class Evaluator extends CRTBaseVisitor<Value> {
     }
 
     private void execute(CRTParser.StatementContext statement, Place place, List<EntityValue> out) {
+        if (statement instanceof WrittenStatement w) {
+            // Built from its tokens; null when it must report something: its tree then runs as any other.
+            Value value = recorder == null ? written.build(w) : null;
+            if (value == null) {
+                execute(w.tree(), place, out);
+            } else if (w.assigns()) {
+                scope().put(w.assignedName(), value);
+            } else if (place == Place.SCENE) {
+                // The tree only for the span of a mistake.
+                if (value instanceof EntityValue e) placed.add(e);
+                else placeInScene(value, ((CRTParser.ExpressionStatementContext) w.tree()).expression());
+            } else if (place == Place.MACRO) {
+                contribute(value, out);
+            }
+            return;
+        }
         if (statement instanceof CRTParser.ExpressionStatementContext s) {
             CRTParser.ExpressionContext e = s.expression();
             Value value = evaluate(e);
@@ -871,6 +894,9 @@ public final class Evaluator extends CRTBaseVisitor<Value> {
         return (String) ctx.cached;
     }
 
+    /** The value of a variable as an expression reads it here, or null when it is unassigned or failed. */
+    Value variable(String name) { return lookupOrNull(name); }
+
     private Value lookupOrNull(String name) {
         if (locals != null) {
             Value v = locals.get(name);
@@ -880,7 +906,7 @@ public final class Evaluator extends CRTBaseVisitor<Value> {
     }
 
     /** True when the name was assigned, even if that assignment failed. */
-    private boolean isAssigned(String name) {
+    boolean isAssigned(String name) {
         return (locals != null && locals.containsKey(name)) || globals.containsKey(name);
     }
 

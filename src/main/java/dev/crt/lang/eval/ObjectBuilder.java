@@ -55,7 +55,8 @@ import java.util.function.BiFunction;
 
 /** Builds the values of object literals {@code Type { attr -> expr … }} per section 5 of the reference. */
 final class ObjectBuilder {
-    private record ObjectType(Set<String> attributes, BiFunction<ObjectBuilder, Attributes, Value> build) {}
+    /** A type of object literal: its attributes' names and its builder. */
+    record ObjectType(Set<String> attributes, BiFunction<ObjectBuilder, Attributes, Value> build) {}
 
     private static final Map<String, ObjectType> TYPES = new LinkedHashMap<>();
     /** The attributes of the Perlin-noise solid textures. */
@@ -93,6 +94,9 @@ final class ObjectBuilder {
 
     /** An area light's n is capped so that n² shadow rays per shading point stay a render, not a hang. */
     static final int MAX_AREA_SAMPLES = 256;
+
+    /** The type of this name, or null. */
+    static ObjectType type(String name) { return TYPES.get(name); }
 
     /** Each type's attribute names, in the order of the table above. */
     static Map<String, Set<String>> attributeNames() {
@@ -158,7 +162,7 @@ final class ObjectBuilder {
         return plan;
     }
 
-    private static String canonical(java.util.Set<String> known, String name) {
+    static String canonical(java.util.Set<String> known, String name) {
         for (String k : known) if (k.equals(name)) return k;
         return null;
     }

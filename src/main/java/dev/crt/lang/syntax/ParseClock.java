@@ -46,7 +46,14 @@ public final class ParseClock {
 
     /** Counts one token or rule entry; every 4096th looks at the clock. */
     void tick(Token at) {
-        if ((++ticks & 4095) != 0) return;
+        if (due()) check(at);
+    }
+
+    /** Counts one token; true for every 4096th, which must then {@link #check} the clock. */
+    boolean due() { return (++ticks & 4095) == 0; }
+
+    /** Stops the parse at {@code at} when the budget is spent. */
+    void check(Token at) {
         if (System.nanoTime() - startNanos > limitNanos) {
             long ms = limit.toMillis();
             throw new OutOfTime("parsing stopped: it took longer than the time budget of "

@@ -79,7 +79,7 @@ final class QuickParser {
             StatementContext statement = kept.get(next);
             if (statement == null) {
                 parser.p = starts[next];
-                statement = parser.statement(null);
+                statement = parser.topLevelStatement();
             } else {
                 kept.set(next, null);
             }
@@ -92,30 +92,53 @@ final class QuickParser {
     }
 
     private final String text;
+    // Whether top-level object literals of plain values are left as their tokens (WrittenStatement).
+    private final boolean written;
     // Null once the reading is done: a statement built again when it runs was already timed.
     private ParseClock clock;
+    // The tokens as the lexer finds them, one array per field: a token object (a leaf of the tree)
+    // is made only when a tree is built, and a written-out object never needs one.
+    private int[] types = new int[1024];
+    private int[] starts = new int[1024];
+    private int[] stops = new int[1024];
+    private int[] lines = new int[1024];
+    private int[] columns = new int[1024];
+    // The text of names, keywords and operators, shared; null for numbers and strings (cut when asked).
+    private String[] texts = new String[1024];
     private ScriptToken[] tokens = new ScriptToken[1024];
     private int count;
     private int p;
     // Names by their characters, so that each distinct name is one String however often it occurs.
     private String[] names = new String[256];
 
-    private QuickParser(String text, ParseClock clock) {
+    private QuickParser(String text, ParseClock clock, boolean written) {
         this.text = text;
         this.clock = clock;
+        this.written = written;
     }
 
     /**
      * The parse of {@code text}, or null when it has a mistake (or characters beyond the Basic
      * Multilingual Plane, whose code-point positions the generated lexer counts).
      */
-    static Result parse(String text, ParseClock clock) { return parse(text, clock, KEPT_TOKENS); }
+    static Result parse(String text, ParseClock clock) { return parse(text, clock, KEPT_TOKENS, false); }
+
+    /**
+     * The same; with {@code written}, a top-level statement (or one directly in a top-level Scene
+     * block) that is an object literal of plain values, or an assignment of one, is a
+     * {@link WrittenStatement}: its tokens, no tree.
+     */
+    static Result parse(String text, ParseClock clock, boolean written) { return parse(text, clock, KEPT_TOKENS, written); }
 
     /** The same, keeping from the reading the trees of the statements that start within {@code keptTokens} tokens. */
-    static Result parse(String text, ParseClock clock, int keptTokens) {
-        QuickParser parser = new QuickParser(text, clock);
+    static Result parse(String text, ParseClock clock, int keptTokens) { return parse(text, clock, keptTokens, false); }
+
+    private static Result parse(String text, ParseClock clock, int keptTokens, boolean written) {
+        QuickParser parser = new QuickParser(text, clock, written);
         try {
-            if (!parser.lex()) return null;
+            boolean lexed = parser.lex();
+            parser.chars = null;
+            if (!lexed) return null;
             List<StatementContext> kept = new ArrayList<>();
             int[] starts = new int[16];
             int n = 0;
@@ -123,7 +146,7 @@ final class QuickParser {
                 if (n == starts.length) starts = Arrays.copyOf(starts, n * 2);
                 int start = parser.p;
                 starts[n++] = start;
-                StatementContext statement = parser.statement(null);
+                StatementContext statement = parser.topLevelStatement();
                 kept.add(start < keptTokens ? statement : null);
             }
             parser.clock = null;
@@ -136,22 +159,25 @@ final class QuickParser {
     // ---- lexer ----------------------------------------------------------------------------------
 
     private boolean lex() {
-        String s = text;
-        int n = s.length();
+        // An array, not the String: the lexer runs mostly before the JIT has compiled it, and the
+        // interpreter reads an array element in one bytecode where charAt is several calls.
+        char[] s = text.toCharArray();
+        chars = s;
+        int n = s.length;
         int i = 0;
         int line = 1;
         int lineStart = 0;
         while (true) {
             char c = 0;
             while (i < n) {
-                c = s.charAt(i);
+                c = s[i];
                 if (c == '\n') {
                     line++;
                     lineStart = ++i;
                 } else if (c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\uFEFF') {
                     i++;
-                } else if (c == '-' && i + 1 < n && s.charAt(i + 1) == '-') {
-                    for (i += 2; i < n && (c = s.charAt(i)) != '\n' && c != '\r'; i++) {
+                } else if (c == '-' && i + 1 < n && s[i + 1] == '-') {
+                    for (i += 2; i < n && (c = s[i]) != '\n' && c != '\r'; i++) {
                         if (Character.isSurrogate(c)) return false;
                     }
                 } else {
@@ -159,13 +185,13 @@ final class QuickParser {
                 }
             }
             if (i >= n) {
-                add(new ScriptToken(s, null, EOF, n, n - 1, line, n - lineStart, count));
+                add(null, EOF, n, n - 1, line, n - lineStart);
                 return true;
             }
             int start = i;
             int type;
             String fixed = null;
-            char next = i + 1 < n ? s.charAt(i + 1) : 0;
+            char next = i + 1 < n ? s[i + 1] : 0;
             switch (c) {
                 case '-' -> type = next == '>' ? ARROW : MINUS;
                 case '<' -> type = next == '=' ? LE : LT;
@@ -197,45 +223,44 @@ final class QuickParser {
             } else if (c == '"') {
                 for (i++;; i++) {
                     if (i >= n) return false;
-                    c = s.charAt(i);
+                    c = s[i];
                     if (c == '"') break;
                     if (c == '\r' || c == '\n' || Character.isSurrogate(c)) return false;
                     if (c == '\\') {
                         if (i + 1 >= n) return false;
-                        char escaped = s.charAt(++i);
+                        char escaped = s[++i];
                         if (escaped == '\r' || escaped == '\n' || Character.isSurrogate(escaped)) return false;
                     }
                 }
                 i++;
                 type = STRING;
             } else if (isDigit(c) || (c == '.' && isDigit(next))) {
-                while (i < n && isDigit(s.charAt(i))) i++;
+                while (i < n && isDigit(s[i])) i++;
                 type = INT;
-                if (i < n && s.charAt(i) == '.') {
+                if (i < n && s[i] == '.') {
                     i++;
-                    while (i < n && isDigit(s.charAt(i))) i++;
+                    while (i < n && isDigit(s[i])) i++;
                     type = FLOAT;
                 }
-                if (i < n && (s.charAt(i) == 'e' || s.charAt(i) == 'E')) {
+                if (i < n && (s[i] == 'e' || s[i] == 'E')) {
                     int j = i + 1;
-                    if (j < n && (s.charAt(j) == '+' || s.charAt(j) == '-')) j++;
+                    if (j < n && (s[j] == '+' || s[j] == '-')) j++;
                     // An exponent without digits is a mistake the compiler reports ("1e", "2.5e-").
-                    if (j >= n || !isDigit(s.charAt(j))) return false;
-                    while (j < n && isDigit(s.charAt(j))) j++;
+                    if (j >= n || !isDigit(s[j])) return false;
+                    while (j < n && isDigit(s[j])) j++;
                     i = j;
                     type = FLOAT;
                 }
             } else if ((c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z')) {
                 i++;
-                while (i < n && isNameCharacter(s.charAt(i))) i++;
+                while (i < n && isNameCharacter(s[i])) i++;
                 fixed = name(start, i);
                 type = keyword(fixed, c >= 'a');
             } else {
                 return false;
             }
-            ScriptToken token = new ScriptToken(s, fixed, type, start, i - 1, line, start - lineStart, count);
-            add(token);
-            clock.tick(token);
+            add(fixed, type, start, i - 1, line, start - lineStart);
+            if (clock.due()) clock.check(token(count - 1));
         }
     }
 
@@ -270,7 +295,8 @@ final class QuickParser {
     /** The one String of the name at [start, end), from an open-addressing table. */
     private String name(int start, int end) {
         int hash = 0;
-        for (int i = start; i < end; i++) hash = 31 * hash + text.charAt(i);
+        char[] s = chars;
+        for (int i = start; i < end; i++) hash = 31 * hash + s[i];
         int mask = names.length - 1;
         for (int slot = mix(hash) & mask;; slot = (slot + 1) & mask) {
             String known = names[slot];
@@ -285,6 +311,8 @@ final class QuickParser {
     }
 
     private int nameCount;
+    // The script's characters while it is lexed.
+    private char[] chars;
 
     private static int mix(int hash) { return hash ^ (hash >>> 16); }
 
@@ -300,21 +328,54 @@ final class QuickParser {
         }
     }
 
-    private void add(ScriptToken token) {
-        if (count == tokens.length) tokens = Arrays.copyOf(tokens, count * 2);
-        tokens[count++] = token;
+    private void add(String fixed, int type, int start, int stop, int line, int column) {
+        if (count == types.length) {
+            types = Arrays.copyOf(types, count * 2);
+            starts = Arrays.copyOf(starts, count * 2);
+            stops = Arrays.copyOf(stops, count * 2);
+            lines = Arrays.copyOf(lines, count * 2);
+            columns = Arrays.copyOf(columns, count * 2);
+            texts = Arrays.copyOf(texts, count * 2);
+            tokens = Arrays.copyOf(tokens, count * 2);
+        }
+        types[count] = type;
+        starts[count] = start;
+        stops[count] = stop;
+        lines[count] = line;
+        columns[count] = column;
+        texts[count++] = fixed;
     }
+
+    /** Token {@code i} as a leaf of the tree, made on first use. */
+    private ScriptToken token(int i) {
+        ScriptToken t = tokens[i];
+        if (t == null) tokens[i] = t = new ScriptToken(text, texts[i], types[i], starts[i], stops[i], lines[i], columns[i], i);
+        return t;
+    }
+
+    int typeOf(int i) { return types[i]; }
+
+    int startOf(int i) { return starts[i]; }
+
+    int stopOf(int i) { return stops[i]; }
+
+    String textOf(int i) {
+        String fixed = texts[i];
+        return fixed != null ? fixed : types[i] == EOF ? "<EOF>" : text.substring(starts[i], stops[i] + 1);
+    }
+
+    String script() { return text; }
 
     /** Names assigned ({@code name =}) or bound as macro parameters ({@code Macro (a, b)}). */
     private Set<String> assignedNames() {
         Set<String> assigned = new HashSet<>();
         for (int i = 0; i + 1 < count; i++) {
-            int type = tokens[i].getType();
-            if (type == IDENT && tokens[i + 1].getType() == ASSIGN) {
-                assigned.add(tokens[i].getText());
-            } else if (type == MACRO && tokens[i + 1].getType() == LPAREN) {
-                for (int j = i + 2; j < count && tokens[j].getType() != RPAREN; j++) {
-                    if (tokens[j].getType() == IDENT) assigned.add(tokens[j].getText());
+            int type = types[i];
+            if (type == IDENT && types[i + 1] == ASSIGN) {
+                assigned.add(texts[i]);
+            } else if (type == MACRO && types[i + 1] == LPAREN) {
+                for (int j = i + 2; j < count && types[j] != RPAREN; j++) {
+                    if (types[j] == IDENT) assigned.add(texts[j]);
                 }
             }
         }
@@ -327,27 +388,27 @@ final class QuickParser {
     // mostly one-child contexts around each number, and all of it lives until the scene is built):
     // a fixed shape is listed when its last child is read, a variable one collected and copied.
 
-    private int type() { return tokens[p].getType(); }
+    private int type() { return types[p]; }
 
-    private int typeAfter() { return tokens[p + 1].getType(); }
+    private int typeAfter() { return types[p + 1]; }
 
     /** Starts {@code ctx} under {@code parent} at the current token. */
     private <C extends ParserRuleContext> C open(C ctx, ParserRuleContext parent) {
         ctx.parent = parent;
-        ctx.start = tokens[p];
+        ctx.start = token(p);
         return ctx;
     }
 
     /** Ends {@code ctx} at the last token read, with {@code children}. */
     private <C extends ParserRuleContext> C close(C ctx, List<ParseTree> children) {
-        ctx.stop = tokens[p - 1];
+        ctx.stop = token(p - 1);
         ctx.children = children;
         return ctx;
     }
 
     /** The current token, read as a child of {@code ctx}. */
     private ScriptToken take(ParserRuleContext ctx) {
-        ScriptToken token = tokens[p++];
+        ScriptToken token = token(p++);
         if (clock != null) clock.tick(token);
         token.parent = ctx;
         return token;
@@ -391,7 +452,7 @@ final class QuickParser {
                 List<ParseTree> children = new ArrayList<>();
                 children.add(take(c));
                 children.add(take(c, LBRACE));
-                while (startsStatement(type())) children.add(statement(c));
+                while (startsStatement(type())) children.add(parent == null ? topLevelStatement(c) : statement(c));
                 children.add(take(c, RBRACE));
                 return close(c, List.copyOf(children));
             }
@@ -412,6 +473,109 @@ final class QuickParser {
                 return close(c, List.of(expression(c)));
             }
         }
+    }
+
+    /** A statement at the top level or directly in a top-level Scene block ({@code parent}). */
+    private StatementContext topLevelStatement(ParserRuleContext parent) {
+        if (written) {
+            StatementContext w = writtenStatement(parent);
+            if (w != null) return w;
+        }
+        return statement(parent);
+    }
+
+    private StatementContext topLevelStatement() { return topLevelStatement(null); }
+
+    // ---- written-out objects --------------------------------------------------------------------
+    //
+    // Exporters write scenes as thousands of `Type { attr -> value … }` literals whose values are
+    // numbers, vec3(…)/rgb(…)-like calls of numbers, names, strings and nested literals of the same
+    // kind. Such a statement is checked here by a scan of its tokens (it is then exactly what the
+    // grammar accepts) and kept as its tokens: the evaluator builds it from them, and builds its
+    // tree only if it must report something.
+
+    /** The statement at the current token as a {@link WrittenStatement}, or null (nothing read). */
+    private StatementContext writtenStatement(ParserRuleContext parent) {
+        int at = p;
+        boolean assigns = type() == IDENT && typeAfter() == ASSIGN;
+        if (assigns) {
+            // Assigning 't' is a mistake the general path reports.
+            if (texts[p].equals("t")) return null;
+            at += 2;
+        }
+        if (typeAt(at) != NAME) return null;
+        int end = scanObject(at, 0);
+        if (end < 0 || continuesExpression(typeAt(end))) return null;
+        if (clock != null) for (int i = p; i < end; i++) if (clock.due()) clock.check(token(i));
+        WrittenStatement statement = new WrittenStatement(this, p, end, parent, assigns);
+        p = end;
+        return statement;
+    }
+
+    private int typeAt(int i) { return types[i]; }
+
+    // Literals nested deeper are left to the general reading, so that an absurdly deep one fails
+    // where it always did (the scan needs less stack than the reading of its tree).
+    private static final int MAX_WRITTEN_DEPTH = 32;
+
+    /** The index after the object literal starting at {@code i} (its type name), or -1 if it is not plain. */
+    private int scanObject(int i, int depth) {
+        if (typeAt(i + 1) != LBRACE) return -1;
+        i += 2;
+        while (true) {
+            int type = typeAt(i);
+            if (type == RBRACE) return i + 1;
+            if (!startsAttribute(type) || typeAt(i + 1) != ARROW) return -1;
+            i = scanValue(i + 2, depth);
+            if (i < 0) return -1;
+        }
+    }
+
+    /** The index after the plain value starting at {@code i}, or -1. */
+    private int scanValue(int i, int depth) {
+        switch (typeAt(i)) {
+            case PLUS, MINUS -> {
+                int t = typeAt(i + 1);
+                return t == INT || t == FLOAT ? i + 2 : -1;
+            }
+            case INT, FLOAT, STRING, TRUE, FALSE -> {
+                return i + 1;
+            }
+            case IDENT -> {
+                if (typeAt(i + 1) != LPAREN) return i + 1;
+                i += 2;
+                if (typeAt(i) == RPAREN) return i + 1;
+                while (true) {
+                    int t = typeAt(i);
+                    if (t == PLUS || t == MINUS) t = typeAt(++i);
+                    if (t != INT && t != FLOAT) return -1;
+                    t = typeAt(++i);
+                    if (t == RPAREN) return i + 1;
+                    if (t != COMMA) return -1;
+                    i++;
+                }
+            }
+            case NAME -> {
+                return depth < MAX_WRITTEN_DEPTH ? scanObject(i, depth + 1) : -1;
+            }
+            default -> {
+                return -1;
+            }
+        }
+    }
+
+    /** Whether a token of this type after an operand continues the expression (an operator, a call, an index). */
+    private static boolean continuesExpression(int type) {
+        return switch (type) {
+            case LE, GE, LT, GT, EQ, NE, AND, OR, QUESTION, STAR, SLASH, PERCENT, PLUS, MINUS, CARET, LBRACKET, LPAREN -> true;
+            default -> false;
+        };
+    }
+
+    /** The parse tree of the statement at token {@code from}, as the general reading builds it. */
+    StatementContext tree(int from, ParserRuleContext parent) {
+        p = from;
+        return statement(parent);
     }
 
     private IfChainContext ifChain(ParserRuleContext parent) {

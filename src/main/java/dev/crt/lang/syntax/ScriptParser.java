@@ -47,9 +47,15 @@ public final class ScriptParser {
      * Parses, stopping with a diagnostic once {@code clock}'s budget is spent: the time budget of
      * a compile covers its parse, which on a huge script is most of the compile.
      */
-    public static Parsed parse(TextPositions positions, ParseClock clock) {
+    public static Parsed parse(TextPositions positions, ParseClock clock) { return parse(positions, clock, false); }
+
+    /**
+     * The same; with {@code writtenObjects}, top-level object literals of plain values are handed
+     * out as {@link WrittenStatement}s, built from their tokens.
+     */
+    public static Parsed parse(TextPositions positions, ParseClock clock, boolean writtenObjects) {
         try {
-            return parseWithin(positions, clock);
+            return parseWithin(positions, clock, writtenObjects);
         } catch (ParseClock.OutOfTime out) {
             SyntaxErrors stopped = new SyntaxErrors(positions);
             stopped.add(out.at(), out.getMessage());
@@ -57,9 +63,9 @@ public final class ScriptParser {
         }
     }
 
-    private static Parsed parseWithin(TextPositions positions, ParseClock clock) {
+    private static Parsed parseWithin(TextPositions positions, ParseClock clock, boolean writtenObjects) {
         // A script without mistakes, nearly every one that is compiled, is read once by hand.
-        QuickParser.Result quick = QuickParser.parse(positions.text(), clock);
+        QuickParser.Result quick = QuickParser.parse(positions.text(), clock, writtenObjects);
         if (quick != null) return new Parsed(quick, List.of(), quick.assignedNames());
 
         // A script with a mistake is read once by ANTLR, with full LL prediction and the error
