@@ -197,10 +197,10 @@ final class WrittenObjects {
                 } catch (EvaluationStopped stop) {
                     throw stop;
                 } catch (ScriptError e) {
-                    a.markFailed();
+                    a.markFailed(names[j]);
                     evaluator.report(e);
                 } catch (Failed f) {
-                    a.markFailed();
+                    a.markFailed(names[j]);
                 }
             } else {
                 a.put(names[j], new Attributes.Given(values[at], span));
