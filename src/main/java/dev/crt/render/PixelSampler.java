@@ -45,13 +45,6 @@ final class PixelSampler {
     /** Per pixel, the adaptive pilot's largest channel variance; shared by the render's samplers. */
     private final float[] pilotVariance;
 
-    /** Pixels per side of the blocks whose primary rays go into one packet; 0 when blocks are not packed. */
-    private final int blockSide;
-    /** While gathering a block's primary rays into the tracer's packet rather than tracing them. */
-    private boolean gathering;
-    /** Per gathered ray, its cone's spread (when the tracer tracks footprints). */
-    private final double[] spreads = new double[RayPacket.SIZE];
-
     /** Asked between rows of sub-pixels (and runs of samples), so that a cancel is prompt however many samples a pixel takes. */
     private final BooleanSupplier stop;
 
@@ -83,67 +76,6 @@ final class PixelSampler {
         height = settings.height();
         spreadShare = 1.0 / grid;
         this.pilotVariance = pilotVariance;
-        blockSide = tracer.packet != null && original == null && kind != Sampler.ADAPTIVE && budget <= RayPacket.SIZE
-                && Boolean.parseBoolean(System.getProperty("crt.packets", "true"))
-                ? (int) Math.sqrt(RayPacket.SIZE / budget) : 0;
-    }
-
-    /** Pixels per side of the blocks {@link #block} takes, 0 when pixels are to be taken one by one. */
-    int blockSide() {
-        return blockSide;
-    }
-
-    /**
-     * The colours of the pixels x0 ≤ x &lt; x1, y0 ≤ y &lt; y1 (at most {@link #blockSide} a side), row
-     * by row into {@code out} (three per pixel), the same as {@link #pixel} gives each: the block's
-     * primary rays are gathered first and their nearest hits found as one packet, then each pixel's
-     * samples are shaded in their order from those hits. A cancelled block's colours are unused.
-     */
-    void block(int x0, int y0, int x1, int y1, double[] out) {
-        Tracer t = tracer;
-        RayPacket p = t.packet;
-        p.count = 0;
-        gathering = true;
-        try {
-            for (int j = y0; j < y1; j++) {
-                for (int i = x0; i < x1; i++) {
-                    switch (kind) {
-                        case GRID -> grid(i, j);
-                        case JITTERED -> jittered(i, j);
-                        default -> sobol(i, j);
-                    }
-                }
-            }
-        } finally {
-            gathering = false;
-        }
-        if (p.count != (x1 - x0) * (y1 - y0) * budget) return;
-        t.closestHits();
-        int r = 0, o = 0;
-        for (int j = y0; j < y1; j++) {
-            for (int i = x0; i < x1; i++) {
-                t.accR = 0;
-                t.accG = 0;
-                t.accB = 0;
-                t.startPixel(i, j, seed, 0);
-                for (int k = 0; k < budget; k++, r++) {
-                    t.primaryRays++;
-                    if (Features.TEXTURES && t.footprints) t.spread = spreads[r];
-                    t.tracePacked(r, depth, weight, weight, weight);
-                }
-                out[o++] = t.accR;
-                out[o++] = t.accG;
-                out[o++] = t.accB;
-            }
-        }
-    }
-
-    /** Puts a primary ray into the packet being gathered, with weight {@link #weight} (every sampler but the adaptive one's). */
-    private void gather(double ox, double oy, double oz) {
-        RayPacket p = tracer.packet;
-        int r = p.count++;
-        p.set(r, ox, oy, oz, direction[0], direction[1], direction[2]);
-        if (Features.TEXTURES && tracer.footprints) spreads[r] = camera.spread(direction) * spreadShare;
     }
 
     /** Writes the linear colour of pixel (i, j) into {@code out[0..2]}; a stopped pixel's colour is partial and unused. */
@@ -342,10 +274,6 @@ final class PixelSampler {
 
     private void trace(int i, int j, double sx, double sy, double w) {
         camera.direction(i, j, sx, sy, direction);
-        if (gathering) {
-            gather(camera.px, camera.py, camera.pz);
-            return;
-        }
         tracer.primaryRays++;
         if (Features.TEXTURES && tracer.footprints) tracer.spread = camera.spread(direction) * spreadShare;
         if (Features.ORIGINAL && original != null) {
@@ -359,10 +287,6 @@ final class PixelSampler {
         camera.direction(i, j, sx, sy, direction);
         camera.aperture.sample(u1, u2, u3, lens);
         camera.throughLens(lens[0], lens[1], origin, direction);
-        if (gathering) {
-            gather(origin[0], origin[1], origin[2]);
-            return;
-        }
         tracer.primaryRays++;
         if (Features.TEXTURES && tracer.footprints) tracer.spread = camera.spread(direction) * spreadShare;
         if (Features.ORIGINAL && original != null) {

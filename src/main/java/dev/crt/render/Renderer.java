@@ -111,8 +111,6 @@ public final class Renderer {
             Runnable work = () -> {
                 double[] rgb = new double[3];
                 float[] pilot = new float[3];
-                int side = sampler.blockSide();
-                double[] block = new double[3 * side * side];
                 long reported = 0;
                 int task;
                 while (!cancelled.get() && (task = nextTask.getAndIncrement()) < tiles * passes) {
@@ -123,25 +121,7 @@ public final class Renderer {
                     int x1 = Math.min(x0 + TILE, width), y1 = Math.min(y0 + TILE, height);
                     // Checked at every pixel (and inside it, by the sampler): a pixel of thousands of
                     // samples is the longest a cancel waits, not a row of a tile.
-                    // Blocks of pixels whose primary rays are walked as packets, each checked for a cancel.
-                    for (int by = y0; side > 0 && !second && by < y1; by += side) {
-                        for (int bx = x0; bx < x1; bx += side) {
-                            if (cancelled.get() || monitor.isCancelled()) {
-                                cancelled.set(true);
-                                return;
-                            }
-                            int bx1 = Math.min(bx + side, x1), by1 = Math.min(by + side, y1);
-                            sampler.block(bx, by, bx1, by1, block);
-                            if (cancelled.get() || monitor.isCancelled()) {
-                                cancelled.set(true);
-                                return;
-                            }
-                            for (int y = by, o = 0; y < by1; y++) {
-                                for (int x = bx; x < bx1; x++, o += 3) image.set(x, y, block[o], block[o + 1], block[o + 2]);
-                            }
-                        }
-                    }
-                    for (int y = side > 0 && !second ? y1 : y0; y < y1; y++) {
+                    for (int y = y0; y < y1; y++) {
                         for (int x = x0; x < x1; x++) {
                             if (cancelled.get() || monitor.isCancelled()) {
                                 cancelled.set(true);

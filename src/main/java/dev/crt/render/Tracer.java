@@ -38,9 +38,6 @@ final class Tracer {
     private final SurfacePoint surface = new SurfacePoint();
     private final CsgSolids.Scratch csgScratch;
     private final BvhWalker walker;
-    /** The primary rays of a block of samples, whose nearest hits are found together; null without a BVH. */
-    final RayPacket packet;
-    private final PacketWalker packetWalker;
     private final double[] colour = new double[3];
     /**
      * Per light, the last opaque item that blocked it: neighbouring shadow rays usually share their
@@ -94,8 +91,6 @@ final class Tracer {
         lastOccluder = new int[lights.count];
         java.util.Arrays.fill(lastOccluder, NONE);
         walker = new BvhWalker(bvh == null ? 1 : bvh.depth + 2);
-        packet = bvh == null ? null : new RayPacket();
-        packetWalker = bvh == null ? null : new PacketWalker(bvh.depth + 2);
         absorbing = geometry.materials.absorbing();
         csgScratch.absorbing = absorbing;
         footprints = !geometry.materials.textures.isEmpty();
@@ -110,22 +105,7 @@ final class Tracer {
     /** Adds (wr, wg, wb) ⊙ trace(o + t·d, depth) to the accumulator. */
     void trace(double ox, double oy, double oz, double dx, double dy, double dz, int depth,
             double wr, double wg, double wb) {
-        trace(-1, ox, oy, oz, dx, dy, dz, depth, wr, wg, wb);
-    }
-
-    /**
-     * As {@link #trace(double, double, double, double, double, double, int, double, double, double)}
-     * for the ray in place {@code r} of {@link #packet}, whose nearest hit {@link #closestHits} found.
-     */
-    void tracePacked(int r, int depth, double wr, double wg, double wb) {
-        RayPacket p = packet;
-        trace(r, p.ox[r], p.oy[r], p.oz[r], p.dx[r], p.dy[r], p.dz[r], depth, wr, wg, wb);
-    }
-
-    /** The one body of both: {@code packed} ≥ 0 takes the nearest hit from that place of the packet. */
-    private void trace(int packed, double ox, double oy, double oz, double dx, double dy, double dz, int depth,
-            double wr, double wg, double wb) {
-        if (packed >= 0 ? !packedHit(packed) : !closestHit(ox, oy, oz, dx, dy, dz, Double.POSITIVE_INFINITY)) {
+        if (!closestHit(ox, oy, oz, dx, dy, dz, Double.POSITIVE_INFINITY)) {
             background.shade(dx, dy, dz, colour);
             accR += wr * colour[0];
             accG += wg * colour[1];
@@ -222,7 +202,7 @@ final class Tracer {
         if (kr > 0) {
             if (rough == 0) {
                 reflectedRays++;
-                trace(-1, px + delta * nx, py + delta * ny, pz + delta * nz, rdx, rdy, rdz, depth - 1, wr * kr, wg * kr, wb * kr);
+                trace(px + delta * nx, py + delta * ny, pz + delta * nz, rdx, rdy, rdz, depth - 1, wr * kr, wg * kr, wb * kr);
             } else {
                 spawn(px, py, pz, rdx, rdy, rdz, nx, ny, nz, delta, depth, rough, samples, wr * kr, wg * kr, wb * kr);
             }
@@ -234,7 +214,7 @@ final class Tracer {
             if (k < 0) {
                 if (rough == 0) {
                     refractedRays++;
-                    trace(-1, px + delta * nx, py + delta * ny, pz + delta * nz, rdx, rdy, rdz, depth - 1, wr * kt, wg * kt, wb * kt);
+                    trace(px + delta * nx, py + delta * ny, pz + delta * nz, rdx, rdy, rdz, depth - 1, wr * kt, wg * kt, wb * kt);
                 } else {
                     spawn(px, py, pz, rdx, rdy, rdz, nx, ny, nz, delta, depth, rough, samples, wr * kt, wg * kt, wb * kt);
                 }
@@ -242,7 +222,7 @@ final class Tracer {
                 double c = eta * cosI - Math.sqrt(k);
                 if (rough == 0) {
                     refractedRays++;
-                    trace(-1, px - delta * nx, py - delta * ny, pz - delta * nz, eta * dx + c * snx, eta * dy + c * sny,
+                    trace(px - delta * nx, py - delta * ny, pz - delta * nz, eta * dx + c * snx, eta * dy + c * sny,
                             eta * dz + c * snz, depth - 1, wr * kt, wg * kt, wb * kt);
                 } else {
                     spawn(px, py, pz, eta * dx + c * snx, eta * dy + c * sny, eta * dz + c * snz, nx, ny, nz, -delta, depth,
@@ -292,7 +272,7 @@ final class Tracer {
         else refractedRays++;
         double ox = px + side * nx, oy = py + side * ny, oz = pz + side * nz;
         if (rough == 0) {
-            trace(-1, ox, oy, oz, rx, ry, rz, depth - 1, wr, wg, wb);
+            trace(ox, oy, oz, rx, ry, rz, depth - 1, wr, wg, wb);
             return;
         }
         int n = insideLobe ? 1 : samples;
@@ -333,7 +313,7 @@ final class Tracer {
                 gy -= 2 * sign * across * ny;
                 gz -= 2 * sign * across * nz;
             }
-            trace(-1, ox, oy, oz, gx, gy, gz, depth - 1, wr * w, wg * w, wb * w);
+            trace(ox, oy, oz, gx, gy, gz, depth - 1, wr * w, wg * w, wb * w);
         }
         if (outer) insideLobe = false;
     }
@@ -434,82 +414,8 @@ final class Tracer {
     }
 
     private boolean hitItem(int item, double tMax) {
-        return hitItem(item, ray, tMax, hit);
-    }
-
-    private boolean hitItem(int item, Ray ray, double tMax, Hit hit) {
         if (item < 0) return csg.closestHit(-item - 1, ray, tMax, shapes, geometry.materials, span, csgScratch, hit);
         return shapes.firstHit(item, ray, tMax, span, hit);
-    }
-
-    /**
-     * The nearest hits of the first {@code count} rays of {@link #packet} (each set by
-     * {@link RayPacket#set}), each the very one {@link #closestHit} finds for that ray alone: the
-     * unbounded items first, then one walk of the BVH for the packet, in which every ray tests the
-     * leaves its own walk would, in its order; rays the walk drops are walked alone.
-     */
-    void closestHits() {
-        RayPacket p = packet;
-        long all = p.all();
-        for (long a = all; a != 0; a &= a - 1) {
-            int r = Long.numberOfTrailingZeros(a);
-            Ray ray = p.rays[r];
-            Hit h = p.hits[r];
-            double tMax = p.tMax[r];
-            boolean found = false;
-            for (int item : unbounded) {
-                if (hitItem(item, ray, tMax, h)) {
-                    found = true;
-                    tMax = h.t;
-                }
-            }
-            p.tMax[r] = tMax;
-            p.found[r] = found;
-        }
-        PacketWalker walk = packetWalker;
-        int[] items = this.items;
-        walk.start(bvh, p, all);
-        for (int leaf = walk.next(); leaf != BvhWalker.END; leaf = walk.next()) {
-            int first = Bvh.leafFirst(leaf), end = first + Bvh.leafCount(leaf);
-            for (long a = walk.active; a != 0; a &= a - 1) {
-                int r = Long.numberOfTrailingZeros(a);
-                Ray ray = p.rays[r];
-                Hit h = p.hits[r];
-                double tMax = p.tMax[r];
-                for (int k = first; k < end; k++) {
-                    if (hitItem(items[k], ray, tMax, h)) {
-                        p.found[r] = true;
-                        tMax = h.t;
-                    }
-                }
-                p.tMax[r] = tMax;
-            }
-        }
-        for (long a = walk.dropped; a != 0; a &= a - 1) {
-            int r = Long.numberOfTrailingZeros(a);
-            boolean found = closestHit(p.ox[r], p.oy[r], p.oz[r], p.dx[r], p.dy[r], p.dz[r], Double.POSITIVE_INFINITY);
-            p.found[r] = found;
-            if (found) {
-                Hit h = p.hits[r];
-                h.t = hit.t;
-                h.shape = hit.shape;
-                h.face = hit.face;
-                h.flip = hit.flip;
-            }
-        }
-    }
-
-    /** Takes the nearest hit of place {@code r} of the packet into {@link #hit} and {@link #ray}, as {@link #closestHit} leaves them. */
-    boolean packedHit(int r) {
-        RayPacket p = packet;
-        ray.set(p.ox[r], p.oy[r], p.oz[r], p.dx[r], p.dy[r], p.dz[r]);
-        if (!p.found[r]) return false;
-        Hit h = p.hits[r];
-        hit.t = h.t;
-        hit.shape = h.shape;
-        hit.face = h.face;
-        hit.flip = h.flip;
-        return true;
     }
 
     /**
