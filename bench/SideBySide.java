@@ -8,7 +8,10 @@ import java.util.*;
  * Side by side: two CRT jars in one JVM (one class loader each), alternating renders of one scene
  * on one thread, process CPU time per render (less disturbed by other work on a shared machine
  * than wall time), after two warm-up rounds. Run:
- * java bench/SideBySide.java BASE.jar NEW.jar SCENE.crt WIDTH HEIGHT ROUNDS
+ * java bench/SideBySide.java BASE.jar NEW.jar SCENE.crt WIDTH HEIGHT ROUNDS [SAMPLER]
+ * SAMPLER (grid, jittered, sobol, adaptive) is given to each jar that knows samplers, as
+ * {@code --sampler} would be: {@code grid} makes a build with samplers draw the same picture as a
+ * build from before them (f05acbf) on a scene with a lens, where its default differs.
  */
 public class SideBySide {
     public static void main(String[] a) throws Exception {
@@ -27,6 +30,7 @@ public class SideBySide {
             Class<?> sceneC = cl.loadClass("dev.crt.scene.Scene"), settingsC = cl.loadClass("dev.crt.scene.Settings");
             Object settings = sceneC.getMethod("settings").invoke(scene);
             settings = settingsC.getMethod("withSize", int.class, int.class).invoke(settings, w, h);
+            if (a.length > 6) settings = withSampler(cl, settingsC, settings, a[6]);
             Object name = sceneC.getMethod("sourceName").invoke(scene), ents = sceneC.getMethod("entities").invoke(scene);
             scene = sceneC.getConstructor(String.class, settingsC, List.class).newInstance(name, settings, ents);
             Class<?> rc = cl.loadClass("dev.crt.render.Renderer"), mon = cl.loadClass("dev.crt.render.RenderMonitor");
@@ -50,5 +54,18 @@ public class SideBySide {
         System.out.printf("base median CPU %.3f s, new median CPU %.3f s, new/base %.4f%n", m0, m1, m1 / m0);
         System.out.println("base " + cpu.get(0));
         System.out.println("new  " + cpu.get(1));
+    }
+
+    /** The settings with the named sampler, or as they are when this build has no samplers. */
+    private static Object withSampler(ClassLoader cl, Class<?> settingsC, Object settings, String name) throws Exception {
+        Class<?> samplerC;
+        try {
+            samplerC = cl.loadClass("dev.crt.scene.Sampler");
+        } catch (ClassNotFoundException e) {
+            return settings;
+        }
+        Object kind = samplerC.getMethod("valueOf", String.class).invoke(null, name.toUpperCase(Locale.ROOT));
+        double noise = (double) settingsC.getMethod("noise").invoke(settings);
+        return settingsC.getMethod("withSampler", samplerC, double.class).invoke(settings, kind, noise);
     }
 }

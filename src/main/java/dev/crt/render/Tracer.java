@@ -20,7 +20,7 @@ final class Tracer {
      */
     static final double OFFSET = 0x1p-36;
     /** No item: shape indices are ≥ 0 and CSG trees are ≤ −1. */
-    private static final int NONE = Integer.MIN_VALUE;
+    static final int NONE = Integer.MIN_VALUE;
 
     private final SceneGeometry geometry;
     private final Shapes shapes;
@@ -45,6 +45,8 @@ final class Tracer {
      * either way, since one opaque crossing makes the shadow factor 0.
      */
     private final int[] lastOccluder;
+    /** The item that made the last {@link #blocked} true. */
+    int blocker = NONE;
 
     private final PhongShading phong;
     /** Null unless some material shades with the Gooch model. */
@@ -101,6 +103,9 @@ final class Tracer {
     }
 
     Shapes shapes() { return shapes; }
+
+    /** The BVH's items in its order (shape index ≥ 0, or −1 − tree for a CSG tree). */
+    int[] items() { return items; }
 
     /** Adds (wr, wg, wb) ⊙ trace(o + t·d, depth) to the accumulator. */
     void trace(double ox, double oy, double oz, double dx, double dy, double dz, int depth,
@@ -411,6 +416,44 @@ final class Tracer {
             }
         }
         return found;
+    }
+
+    /**
+     * Whether {@link #closestHit} finds any surface along o + t·w, 0 &lt; t &lt; tMax (the 2015 model's
+     * shadow rays, in scenes without unbounded items), found sooner: item {@code cached} first (the
+     * caller's last blocker, or {@link #NONE}), then the same walk stopped at its first hit rather
+     * than narrowed to the nearest. Leaves {@link #blocker} the item that answered.
+     *
+     * <p>The same answer as closestHit's: until something is found its far end stays tMax, so the
+     * leaves it would visit are fixed (those whose boxes pass the walk's tests, less the farther
+     * child of a pair when it is entered at or beyond tMax) and it finds something iff one of their
+     * items is hit before tMax, in whatever order. The cached item is tested with a far end shorter
+     * by 2⁻⁴⁰ of tMax, so the boxes around a hit it reports are entered well before tMax (none of
+     * them is culled) and, as every walk takes for granted of an item's hit point and its boxes'
+     * widened tests, pass those tests: its leaf is among those visited.
+     */
+    boolean blocked(double ox, double oy, double oz, double wx, double wy, double wz, double tMax, int cached) {
+        ray.set(ox, oy, oz, wx, wy, wz);
+        if (cached != NONE && hitItem(cached, tMax * (1 - 0x1p-40))) {
+            blocker = cached;
+            return true;
+        }
+        BvhWalker walk = walker;
+        if (!walk.start(bvh, ray, 0, tMax)) return false;
+        for (int leaf = walk.nextNearest(tMax); leaf != BvhWalker.END; leaf = walk.nextNearest(tMax)) {
+            for (int k = Bvh.leafFirst(leaf), end = k + Bvh.leafCount(leaf); k < end; k++) {
+                if (hitItem(items[k], tMax)) {
+                    blocker = items[k];
+                    return true;
+                }
+            }
+        }
+        return false;
+    }
+
+    /** Whether {@link #blocked} can stand for closestHit: a BVH and no unbounded items (the 2015 model's planes are one-sided). */
+    boolean blockedApplies() {
+        return bvh != null && unbounded.length == 0;
     }
 
     private boolean hitItem(int item, double tMax) {
