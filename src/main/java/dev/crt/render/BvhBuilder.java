@@ -136,27 +136,94 @@ final class BvhBuilder {
      */
     private Bvh finish(int depth) {
         int slots = children.length / 2;
-        int count = 0;
-        for (int s = 0; s < slots; s++) if (children[2 * s] != 0) count++;
+        // The renumbering in chunks of slots on every core: each chunk counts its inner nodes,
+        // then numbers them from the sum of the counts before it (the same numbers in any chunking).
+        int chunks = Parallel.chunks(slots);
+        int[] before = new int[chunks + 1];
+        int[] children = this.children;
+        Parallel.forChunks(slots, chunks, (chunk, from, to) -> {
+            int c = 0;
+            for (int s = from; s < to; s++) if (children[2 * s] != 0) c++;
+            before[chunk + 1] = c;
+        });
+        for (int c = 0; c < chunks; c++) before[c + 1] += before[c];
+        int count = before[chunks];
         int[] links = children;
-        int[] index = null;
         if (count < slots) {
-            index = new int[slots];
-            links = new int[2 * count];
-            for (int s = 0, k = 0; s < slots; s++) if (children[2 * s] != 0) index[s] = k++;
-            for (int s = 0; s < slots; s++) {
-                if (children[2 * s] == 0) continue;
-                for (int c = 0; c < 2; c++) {
-                    int child = children[2 * s + c];
-                    links[2 * index[s] + c] = Bvh.isLeaf(child) ? child : index[child];
+            int[] index = new int[slots];
+            int[] dense = new int[2 * count];
+            Parallel.forChunks(slots, chunks, (chunk, from, to) -> {
+                int k = before[chunk];
+                for (int s = from; s < to; s++) if (children[2 * s] != 0) index[s] = k++;
+            });
+            Parallel.forChunks(slots, chunks, (chunk, from, to) -> {
+                for (int s = from; s < to; s++) {
+                    if (children[2 * s] == 0) continue;
+                    for (int c = 0; c < 2; c++) {
+                        int child = children[2 * s + c];
+                        dense[2 * index[s] + c] = Bvh.isLeaf(child) ? child : index[child];
+                    }
                 }
-            }
+            });
+            links = dense;
         }
         double[] box = new double[Bvh.NODE * count];
-        // Depth-first order puts children after their parent: from the last node back, both
-        // children's boxes are known when a node's are written.
+        boxes(links, box, count);
+        double[] rootBox = new double[6];
+        unionOfChildren(box, 0, rootBox);
+        return new Bvh(box, links, rootBox, 2 * count + 1, depth);
+    }
+
+    /**
+     * The boxes of nodes [0, count) of a depth-first tree. The subtree under a node is a run of
+     * node numbers, so the tree is cut near its top into subtrees, which are done on every core
+     * (each one from its last node back: both children's boxes are known when a node's are
+     * written), and then the few nodes above them. Each box is computed alike however the
+     * work is cut.
+     */
+    private void boxes(int[] links, double[] box, int count) {
+        // Runs [first, end) of nodes, each a whole subtree; the nodes split to get them, in order.
+        int parts = Parallel.threads == 1 || count < Parallel.MIN_CHUNK ? 1 : 8 * Parallel.threads;
+        int[] first = new int[parts + 1], end = new int[parts + 1];
+        int[] above = new int[parts];
+        int runs = 1, split = 0;
+        first[0] = 0;
+        end[0] = count;
+        while (runs < parts) {
+            int widest = 0;
+            for (int r = 1; r < runs; r++) if (end[r] - first[r] > end[widest] - first[widest]) widest = r;
+            int k = first[widest], e = end[widest];
+            if (e - k < Parallel.MIN_CHUNK) break;
+            // Node k leaves the run: its inner children's subtrees take its place.
+            if (split == above.length) above = Arrays.copyOf(above, 2 * split);
+            above[split++] = k;
+            int l = links[2 * k], r = links[2 * k + 1];
+            boolean left = !Bvh.isLeaf(l), right = !Bvh.isLeaf(r);
+            if (left && right) {
+                first[widest] = l;
+                end[widest] = r;
+                first[runs] = r;
+                end[runs++] = e;
+            } else if (left || right) {
+                first[widest] = left ? l : r;
+            } else {
+                first[widest] = e;
+            }
+        }
+        int n = runs;
+        Parallel.Chunk run = (chunk, from, to) -> {
+            double[] acc = new double[6];
+            for (int i = from; i < to; i++) nodeBoxes(links, box, first[i], end[i], acc);
+        };
+        Parallel.forChunks(n, n, run);
+        // The split nodes come before the nodes below them: from the last split back.
         double[] acc = new double[6];
-        for (int k = count - 1; k >= 0; k--) {
+        for (int i = split - 1; i >= 0; i--) nodeBoxes(links, box, above[i], above[i] + 1, acc);
+    }
+
+    /** The boxes of nodes [from, to), each after the nodes after it, so that its children's are known. */
+    private void nodeBoxes(int[] links, double[] box, int from, int to, double[] acc) {
+        for (int k = to - 1; k >= from; k--) {
             for (int c = 0; c < 2; c++) {
                 int child = links[2 * k + c];
                 if (Bvh.isLeaf(child)) {
@@ -170,9 +237,6 @@ final class BvhBuilder {
                 }
             }
         }
-        double[] rootBox = new double[6];
-        unionOfChildren(box, 0, rootBox);
-        return new Bvh(box, links, rootBox, 2 * count + 1, depth);
     }
 
     private void unionOfItems(int from, int to, double[] acc) {
