@@ -122,36 +122,57 @@ final class Shapes {
      */
     void copyAll(Shapes source, int[] src, int from, int to) {
         int n = to - from, first = count;
-        int length = 0;
-        for (int i = from; i < to; i++) {
-            int s = src[i];
-            length += (s + 1 < source.count ? source.offset[s + 1] : source.dataSize) - source.offset[s];
+        // In chunks on every core: each chunk measures its shapes' data, then copies them from
+        // where the chunks before it end (the same layout in any chunking).
+        int chunks = Parallel.chunks(n);
+        long[] before = new long[chunks + 1];
+        int[] offsetFrom = source.offset;
+        int last = source.count - 1, lastEnd = source.dataSize;
+        Parallel.forChunks(n, chunks, (chunk, a, b) -> {
+            long length = 0;
+            for (int i = a; i < b; i++) {
+                int s = src[from + i];
+                length += (s < last ? offsetFrom[s + 1] : lastEnd) - offsetFrom[s];
+            }
+            before[chunk + 1] = length;
+        });
+        for (int c = 0; c < chunks; c++) before[c + 1] += before[c];
+        if (dataSize + before[chunks] > Integer.MAX_VALUE - 16) throw new OutOfMemoryError("scene data too large");
+        reserve(first + n, dataSize + (int) before[chunks]);
+        int base = dataSize;
+        Parallel.forChunks(n, chunks, (chunk, a, b) -> copyRange(source, src, from, first, a, b, base + (int) before[chunk]));
+        if (source.meshes.length > 0) {
+            for (int i = 0; i < n; i++) {
+                if (kind[first + i] != MESH) continue;
+                // The mesh index is the source's: the geometry itself is shared, not prepared again.
+                int at = offset[first + i] + Affine.SIZE;
+                data[at] = meshIndex(source.meshes[(int) data[at]]);
+            }
         }
-        reserve(first + n, dataSize + length);
+        count = first + n;
+        dataSize = base + (int) before[chunks];
+    }
+
+    /** Copies shapes {@code src[from + a]} … {@code src[from + b − 1]} of {@code source} to {@code first + a} on, their data from {@code at}. */
+    private void copyRange(Shapes source, int[] src, int from, int first, int a, int b, int at) {
         int[] kindFrom = source.kind, kindTo = kind;
-        for (int i = 0; i < n; i++) kindTo[first + i] = kindFrom[src[from + i]];
+        for (int i = a; i < b; i++) kindTo[first + i] = kindFrom[src[from + i]];
         int[] materialFrom = source.material, materialTo = material;
-        for (int i = 0; i < n; i++) materialTo[first + i] = materialFrom[src[from + i]];
+        for (int i = a; i < b; i++) materialTo[first + i] = materialFrom[src[from + i]];
         double[] scaleFrom = source.scale, scaleTo = scale;
-        for (int i = 0; i < n; i++) scaleTo[first + i] = scaleFrom[src[from + i]];
+        for (int i = a; i < b; i++) scaleTo[first + i] = scaleFrom[src[from + i]];
         double[] matrixFrom = source.toEntity, matrixTo = toEntity;
-        for (int i = 0; i < n; i++) System.arraycopy(matrixFrom, src[from + i] * 12, matrixTo, (first + i) * 12, 12);
+        for (int i = a; i < b; i++) System.arraycopy(matrixFrom, src[from + i] * 12, matrixTo, (first + i) * 12, 12);
         int[] offsetFrom = source.offset, offsetTo = offset;
         double[] dataFrom = source.data, dataTo = data;
-        int at = dataSize, last = source.count - 1;
-        for (int i = 0; i < n; i++) {
+        int last = source.count - 1;
+        for (int i = a; i < b; i++) {
             int s = src[from + i];
             int start = offsetFrom[s], end = s < last ? offsetFrom[s + 1] : source.dataSize;
             offsetTo[first + i] = at;
             System.arraycopy(dataFrom, start, dataTo, at, end - start);
-            if (kindTo[first + i] == MESH) {
-                // The mesh index is the source's: the geometry itself is shared, not prepared again.
-                dataTo[at + Affine.SIZE] = meshIndex(source.meshes[(int) dataFrom[start + Affine.SIZE]]);
-            }
             at += end - start;
         }
-        count = first + n;
-        dataSize = at;
     }
 
     private int next() {

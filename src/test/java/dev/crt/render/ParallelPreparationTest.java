@@ -2,7 +2,18 @@ package dev.crt.render;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
+import dev.crt.geom.Transform;
+import dev.crt.geom.Vec3;
+import dev.crt.scene.CsgOperation;
+import dev.crt.scene.Entity;
+import dev.crt.scene.Material;
+import dev.crt.scene.Mesh;
 import dev.crt.scene.MeshData;
+import dev.crt.scene.Sphere;
+import dev.crt.scene.SourceSpan;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.List;
 import java.util.SplittableRandom;
 import java.util.concurrent.atomic.AtomicIntegerArray;
 import java.util.function.Supplier;
@@ -10,7 +21,8 @@ import org.junit.jupiter.api.Test;
 
 /**
  * The passes of a scene's preparation that run on several cores (the BVH's renumbering and boxes,
- * a mesh's triangle boxes, degenerate-triangle count and reordering) give the same result to the
+ * a mesh's triangle boxes, degenerate-triangle count and reordering, the scene's shapes placed in
+ * traversal order) give the same result to the
  * bit for one thread and several, on inputs below and above {@link Parallel#MIN_CHUNK}.
  */
 class ParallelPreparationTest {
@@ -83,6 +95,46 @@ class ParallelPreparationTest {
                 }
             }
         }
+    }
+
+    @Test
+    void sameSceneGeometryForOneThreadAndSeveral() {
+        // Spheres in runs long enough to be copied in chunks, broken by boxes, transformed
+        // spheres, a mesh instance, CSG trees and planes, with a palette of materials.
+        SplittableRandom r = new SplittableRandom(7);
+        Material[] paints = {Scenes.matte(Scenes.rgb(1, 0, 0)), Scenes.matte(Scenes.rgb(0, 1, 0)), Scenes.matte(Scenes.rgb(0, 0, 1))};
+        MeshData mesh = strip(500, false, 3);
+        List<Entity> entities = new ArrayList<>();
+        for (int i = 0; i < 3 * Parallel.MIN_CHUNK; i++) {
+            Vec3 c = Scenes.v(r.nextDouble(-10, 10), r.nextDouble(-10, 10), r.nextDouble(-10, 10));
+            Material m = paints[i % 3];
+            if (i % 5000 == 17) entities.add(Scenes.box(c, c.plus(Scenes.v(0.1, 0.2, 0.3)), m));
+            else if (i % 7000 == 3) entities.add(new Sphere(c, 0.05, m, Transform.scaling(Scenes.v(1, 2, 3)), SourceSpan.NONE));
+            else if (i % 9000 == 5) entities.add(new Mesh(mesh, true, m, Transform.translation(c), SourceSpan.NONE));
+            else if (i % 11000 == 8) entities.add(Scenes.csg(CsgOperation.DIFFERENCE, Scenes.sphere(c, 0.2, m), Scenes.box(c, c.plus(Scenes.v(1, 1, 1)), m)));
+            else if (i % 20000 == 9) entities.add(Scenes.plane(Scenes.v(0, 1, 0), c, m));
+            else entities.add(Scenes.sphere(c, 0.03, m));
+        }
+        SceneGeometry one = withThreads(1, () -> new SceneGeometry(entities));
+        SceneGeometry several = withThreads(2, () -> new SceneGeometry(entities));
+        assertThat(several.items).isEqualTo(one.items);
+        assertThat(several.unbounded).isEqualTo(one.unbounded);
+        assertThat(several.owner).isEqualTo(one.owner);
+        assertThat(several.bvh.children).isEqualTo(one.bvh.children);
+        assertThat(several.bvh.box).isEqualTo(one.bvh.box);
+        Shapes a = one.shapes, b = several.shapes;
+        assertThat(b.count()).isEqualTo(a.count());
+        assertThat(b.dataSize()).isEqualTo(a.dataSize());
+        assertThat(Arrays.copyOf(b.kind, b.count())).isEqualTo(Arrays.copyOf(a.kind, a.count()));
+        assertThat(Arrays.copyOf(b.offset, b.count())).isEqualTo(Arrays.copyOf(a.offset, a.count()));
+        assertThat(Arrays.copyOf(b.material, b.count())).isEqualTo(Arrays.copyOf(a.material, a.count()));
+        assertThat(Arrays.copyOf(b.scale, b.count())).isEqualTo(Arrays.copyOf(a.scale, a.count()));
+        assertThat(Arrays.copyOf(b.toEntity, 12 * b.count())).isEqualTo(Arrays.copyOf(a.toEntity, 12 * a.count()));
+        assertThat(Arrays.copyOf(b.data, b.dataSize())).isEqualTo(Arrays.copyOf(a.data, a.dataSize()));
+        assertThat(b.meshes).hasSize(1).hasSameSizeAs(a.meshes);
+        assertThat(several.materials.data).isEqualTo(one.materials.data);
+        // Every entity but the planes' is in the hierarchy, each of its shapes owned by it.
+        assertThat(one.items.length + one.unbounded.length).isEqualTo(entities.size());
     }
 
     /** A random triangle strip of {@code n} triangles; with {@code degenerate}, every 97th has a repeated vertex. */
