@@ -1,7 +1,9 @@
 package dev.crt.render;
 
+import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.ForkJoinPool;
-import java.util.concurrent.ForkJoinTask;
+import java.util.concurrent.atomic.AtomicInteger;
+import java.util.concurrent.atomic.AtomicReference;
 
 /**
  * Splits a loop over [0, n) into contiguous chunks run on the cores at once, for the passes of a
@@ -27,9 +29,9 @@ final class Parallel {
     }
 
     /**
-     * Runs {@code work} over the {@link #chunks}(n) chunks of [0, n), the first on the calling
-     * thread and the others on the common fork/join pool, and returns when all are done; chunk k
-     * covers [n·k / chunks, n·(k + 1) / chunks).
+     * Runs {@code work} over the {@link #chunks}(n) chunks of [0, n), on the calling thread and
+     * the common fork/join pool's, and returns when all are done; chunk k covers
+     * [n·k / chunks, n·(k + 1) / chunks). A chunk's exception is thrown here, after all are done.
      */
     static void forChunks(int n, Chunk work) {
         forChunks(n, chunks(n), work);
@@ -41,14 +43,37 @@ final class Parallel {
             work.run(0, 0, n);
             return;
         }
-        ForkJoinTask<?>[] tasks = new ForkJoinTask<?>[c];
-        for (int k = 1; k < c; k++) {
-            int chunk = k, from = start(n, c, k), to = start(n, c, k + 1);
-            // The common pool's own threads number cores − 1: with the caller, every core works.
-            tasks[k] = ForkJoinPool.commonPool().submit(() -> work.run(chunk, from, to));
+        // Chunks are claimed, not assigned: the calling thread and the pool's threads take the
+        // next unclaimed one until none is left, and the caller waits only for chunks under way.
+        // On a loaded machine a pool thread may start late or not at all; the caller then does
+        // its chunks instead of waiting for it.
+        AtomicInteger next = new AtomicInteger();
+        CountDownLatch done = new CountDownLatch(c);
+        AtomicReference<Throwable> failure = new AtomicReference<>();
+        Runnable worker = () -> {
+            for (int k; (k = next.getAndIncrement()) < c; ) {
+                try {
+                    work.run(k, start(n, c, k), start(n, c, k + 1));
+                } catch (Throwable t) {
+                    failure.compareAndSet(null, t);
+                } finally {
+                    done.countDown();
+                }
+            }
+        };
+        // The common pool's own threads number cores − 1: with the caller, every core works.
+        for (int k = 1; k < c; k++) ForkJoinPool.commonPool().execute(worker);
+        worker.run();
+        try {
+            done.await();
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            throw new IllegalStateException("interrupted while preparing the scene", e);
         }
-        work.run(0, 0, start(n, c, 1));
-        for (int k = 1; k < c; k++) tasks[k].join();
+        Throwable t = failure.get();
+        if (t instanceof RuntimeException r) throw r;
+        if (t instanceof Error e) throw e;
+        if (t != null) throw new IllegalStateException(t);
     }
 
     /** Where chunk {@code k} of {@code c} over [0, n) starts. */

@@ -1,6 +1,7 @@
 package dev.crt.render;
 
 import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
 import dev.crt.geom.Transform;
 import dev.crt.geom.Vec3;
@@ -47,6 +48,23 @@ class ParallelPreparationTest {
                     return null;
                 });
             }
+        }
+    }
+
+    @Test
+    void aChunksFailureIsThrownToTheCallerAfterTheOthersAreDone() {
+        for (int threads : new int[] {1, 2, 4}) {
+            AtomicIntegerArray ran = new AtomicIntegerArray(4);
+            int n = 4 * Parallel.MIN_CHUNK;
+            assertThatThrownBy(() -> withThreads(threads, () -> {
+                int chunks = Parallel.chunks(n);
+                Parallel.forChunks(n, chunks, (chunk, from, to) -> {
+                    ran.incrementAndGet(chunk);
+                    if (chunk == chunks - 1) throw new IllegalArgumentException("chunk " + chunk);
+                });
+                return null;
+            })).as("%d threads", threads).isInstanceOf(IllegalArgumentException.class).hasMessage("chunk " + (Math.min(threads, 4) - 1));
+            for (int k = 0; k < Math.min(threads, 4); k++) assertThat(ran.get(k)).as("chunk %d, %d threads", k, threads).isEqualTo(1);
         }
     }
 
