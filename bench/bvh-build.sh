@@ -2,7 +2,7 @@
 # BVH build time and memory from 1e5 to 1e7 items (issue 10 goal 3, issue 12's mesh goal).
 #
 #   bench/bvh-build.sh [--sizes "100000 1000000 10000000"] [--rounds N] [--heap 2g]
-#                      [--scenes] [--work DIR]
+#                      [--scenes] [--work DIR] [--jar JAR]
 #
 # For each size: BvhBuilder.build alone over random spheres (bench/scenes/spheres.crt's
 # distribution) and over the triangles of a bumpy ball (bench/tools/MeshGen.java's), N rounds in
@@ -13,8 +13,9 @@
 # bench/scenes/spheres.crt at 1e6 spheres and prepare its geometry (heap held per sphere after
 # both), and load a generated 10-million-triangle ball (binary PLY, kept in --work, default
 # ${TMPDIR:-/tmp}/crt-bvh-build) and build its BVH, in --heap.
-# Needs target/crt.jar (mvn -B -q -o package -DskipTests). Numbers move with the machine's load:
-# the load average is printed before and after.
+# Needs target/crt.jar (mvn -B -q -o package -DskipTests), or the jar given by --jar (another
+# build's, to compare side by side: run the two alternately). Numbers move with the machine's
+# load: the load average is printed before and after.
 set -euo pipefail
 
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
@@ -24,8 +25,9 @@ rounds=3
 heap=2g
 scenes=0
 work="${TMPDIR:-/tmp}/crt-bvh-build"
+jar="$root/target/crt.jar"
 
-usage() { sed -n '2,17p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'; }
+usage() { sed -n '2,18p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'; }
 while [ $# -gt 0 ]; do
   case "$1" in
     --sizes) sizes="$2"; shift 2 ;;
@@ -33,11 +35,11 @@ while [ $# -gt 0 ]; do
     --heap) heap="$2"; shift 2 ;;
     --scenes) scenes=1; shift ;;
     --work) work="$2"; shift 2 ;;
+    --jar) jar="$(cd "$(dirname "$2")" && pwd)/$(basename "$2")"; shift 2 ;;
     -h|--help) usage; exit 0 ;;
     *) echo "bvh-build: unknown option '$1'" >&2; usage >&2; exit 2 ;;
   esac
 done
-jar="$root/target/crt.jar"
 if [ ! -f "$jar" ]; then echo "bvh-build: $jar is missing: run mvn -B -q -o package -DskipTests first" >&2; exit 3; fi
 classes="$(mktemp -d)"
 trap 'rm -rf "$classes"' EXIT

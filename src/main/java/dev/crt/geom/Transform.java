@@ -170,6 +170,9 @@ public final class Transform {
     /** A copy of the inverse matrix, row-major 3x4. */
     public double[] inverseMatrix() { return inv.clone(); }
 
+    /** Writes the inverse matrix (row-major 3x4) into {@code out} from {@code at}, with no copy made on the way. */
+    public void copyInverse(double[] out, int at) { System.arraycopy(inv, 0, out, at, 12); }
+
     @Override
     public boolean equals(Object o) {
         return o instanceof Transform t && Arrays.equals(m, t.m);

@@ -3,6 +3,8 @@ package dev.crt.render;
 import dev.crt.geom.Aabb;
 import java.util.Arrays;
 import java.util.concurrent.ForkJoinPool;
+import java.util.concurrent.ForkJoinTask;
+import java.util.concurrent.RecursiveAction;
 import java.util.concurrent.RecursiveTask;
 
 /**
@@ -10,8 +12,9 @@ import java.util.concurrent.RecursiveTask;
  * axis, or on the widest axis only for ranges of more than {@value #ONE_AXIS_ABOVE} items);
  * builds of more than {@value #MORTON_ABOVE} items finish their ranges of up to
  * {@value #MORTON_RANGE} by Morton order instead (docs/benchmarks.md section 18). Subtrees of more
- * than 10,000 items are built in parallel with fork/join; the tree is the same for any number of
- * threads. The items' bounds are reordered in the caller's array rather than copied, the build
+ * than 10,000 items are built in parallel with fork/join, ranges of more than
+ * {@value #PARALLEL_SPLIT_ABOVE} are measured and binned in parts on every thread, and the final
+ * renumbering and boxes run in parts too; the tree is the same for any number of threads. The items' bounds are reordered in the caller's array rather than copied, the build
  * records only each node's children, and the boxes are computed at the end into an array of the
  * final size: at most about 134 bytes per item while building, the tree included, where copies
  * and a second layout took 300.
@@ -36,6 +39,11 @@ final class BvhBuilder {
      */
     static final int MORTON_ABOVE = 1 << 17;
     static final int MORTON_RANGE = 1 << 12;
+    /**
+     * Ranges of more items than this are measured and binned on every thread at once: the top
+     * of the tree, where the subtrees built in parallel have not yet begun.
+     */
+    static final int PARALLEL_SPLIT_ABOVE = 1 << 17;
     private static final double TRAVERSAL_COST = 1.0;
     private static final double INTERSECTION_COST = 1.5;
 
@@ -136,27 +144,94 @@ final class BvhBuilder {
      */
     private Bvh finish(int depth) {
         int slots = children.length / 2;
-        int count = 0;
-        for (int s = 0; s < slots; s++) if (children[2 * s] != 0) count++;
+        // The renumbering in chunks of slots on every core: each chunk counts its inner nodes,
+        // then numbers them from the sum of the counts before it (the same numbers in any chunking).
+        int chunks = Parallel.chunks(slots);
+        int[] before = new int[chunks + 1];
+        int[] children = this.children;
+        Parallel.forChunks(slots, chunks, (chunk, from, to) -> {
+            int c = 0;
+            for (int s = from; s < to; s++) if (children[2 * s] != 0) c++;
+            before[chunk + 1] = c;
+        });
+        for (int c = 0; c < chunks; c++) before[c + 1] += before[c];
+        int count = before[chunks];
         int[] links = children;
-        int[] index = null;
         if (count < slots) {
-            index = new int[slots];
-            links = new int[2 * count];
-            for (int s = 0, k = 0; s < slots; s++) if (children[2 * s] != 0) index[s] = k++;
-            for (int s = 0; s < slots; s++) {
-                if (children[2 * s] == 0) continue;
-                for (int c = 0; c < 2; c++) {
-                    int child = children[2 * s + c];
-                    links[2 * index[s] + c] = Bvh.isLeaf(child) ? child : index[child];
+            int[] index = new int[slots];
+            int[] dense = new int[2 * count];
+            Parallel.forChunks(slots, chunks, (chunk, from, to) -> {
+                int k = before[chunk];
+                for (int s = from; s < to; s++) if (children[2 * s] != 0) index[s] = k++;
+            });
+            Parallel.forChunks(slots, chunks, (chunk, from, to) -> {
+                for (int s = from; s < to; s++) {
+                    if (children[2 * s] == 0) continue;
+                    for (int c = 0; c < 2; c++) {
+                        int child = children[2 * s + c];
+                        dense[2 * index[s] + c] = Bvh.isLeaf(child) ? child : index[child];
+                    }
                 }
-            }
+            });
+            links = dense;
         }
         double[] box = new double[Bvh.NODE * count];
-        // Depth-first order puts children after their parent: from the last node back, both
-        // children's boxes are known when a node's are written.
+        boxes(links, box, count);
+        double[] rootBox = new double[6];
+        unionOfChildren(box, 0, rootBox);
+        return new Bvh(box, links, rootBox, 2 * count + 1, depth);
+    }
+
+    /**
+     * The boxes of nodes [0, count) of a depth-first tree. The subtree under a node is a run of
+     * node numbers, so the tree is cut near its top into subtrees, which are done on every core
+     * (each one from its last node back: both children's boxes are known when a node's are
+     * written), and then the few nodes above them. Each box is computed alike however the
+     * work is cut.
+     */
+    private void boxes(int[] links, double[] box, int count) {
+        // Runs [first, end) of nodes, each a whole subtree; the nodes split to get them, in order.
+        int parts = Parallel.threads == 1 || count < Parallel.MIN_CHUNK ? 1 : 8 * Parallel.threads;
+        int[] first = new int[parts + 1], end = new int[parts + 1];
+        int[] above = new int[parts];
+        int runs = 1, split = 0;
+        first[0] = 0;
+        end[0] = count;
+        while (runs < parts) {
+            int widest = 0;
+            for (int r = 1; r < runs; r++) if (end[r] - first[r] > end[widest] - first[widest]) widest = r;
+            int k = first[widest], e = end[widest];
+            if (e - k < Parallel.MIN_CHUNK) break;
+            // Node k leaves the run: its inner children's subtrees take its place.
+            if (split == above.length) above = Arrays.copyOf(above, 2 * split);
+            above[split++] = k;
+            int l = links[2 * k], r = links[2 * k + 1];
+            boolean left = !Bvh.isLeaf(l), right = !Bvh.isLeaf(r);
+            if (left && right) {
+                first[widest] = l;
+                end[widest] = r;
+                first[runs] = r;
+                end[runs++] = e;
+            } else if (left || right) {
+                first[widest] = left ? l : r;
+            } else {
+                first[widest] = e;
+            }
+        }
+        int n = runs;
+        Parallel.Chunk run = (chunk, from, to) -> {
+            double[] acc = new double[6];
+            for (int i = from; i < to; i++) nodeBoxes(links, box, first[i], end[i], acc);
+        };
+        Parallel.forChunks(n, n, run);
+        // The split nodes come before the nodes below them: from the last split back.
         double[] acc = new double[6];
-        for (int k = count - 1; k >= 0; k--) {
+        for (int i = split - 1; i >= 0; i--) nodeBoxes(links, box, above[i], above[i] + 1, acc);
+    }
+
+    /** The boxes of nodes [from, to), each after the nodes after it, so that its children's are known. */
+    private void nodeBoxes(int[] links, double[] box, int from, int to, double[] acc) {
+        for (int k = to - 1; k >= from; k--) {
             for (int c = 0; c < 2; c++) {
                 int child = links[2 * k + c];
                 if (Bvh.isLeaf(child)) {
@@ -170,9 +245,6 @@ final class BvhBuilder {
                 }
             }
         }
-        double[] rootBox = new double[6];
-        unionOfChildren(box, 0, rootBox);
-        return new Bvh(box, links, rootBox, 2 * count + 1, depth);
     }
 
     private void unionOfItems(int from, int to, double[] acc) {
@@ -408,7 +480,8 @@ final class BvhBuilder {
      */
     private int split(int lo, int hi, Scratch sc) {
         int n = hi - lo;
-        measure(lo, hi, sc);
+        boolean wide = n > PARALLEL_SPLIT_ABOVE && Parallel.threads > 1 && ForkJoinTask.inForkJoinPool();
+        if (wide) measureInParts(lo, hi, sc); else measure(lo, hi, sc);
         if (n <= 1) return -1;
         double[] cmin = sc.cmin, cmax = sc.cmax, scale = sc.scale;
         for (int axis = 0; axis < 3; axis++) {
@@ -422,7 +495,7 @@ final class BvhBuilder {
             if (cmax[2] - cmin[2] > cmax[widest] - cmin[widest]) widest = 2;
             for (int axis = 0; axis < 3; axis++) if (axis != widest) scale[axis] = 0;
             sc.used[0] = sc.used[1] = sc.used[2] = 0;
-            sc.used[widest] = binAxis(lo, hi, sc, widest);
+            sc.used[widest] = wide ? binAxisInParts(lo, hi, sc, widest) : binAxis(lo, hi, sc, widest);
         } else {
             binAll(lo, hi, sc);
         }
@@ -436,6 +509,70 @@ final class BvhBuilder {
         double splitCost = TRAVERSAL_COST + INTERSECTION_COST * sc.bestCost / parentArea;
         if (n <= MAX_LEAF && (splitCost >= INTERSECTION_COST * n || !(parentArea > 0))) return -1;
         return partition(lo, hi, bestAxis, cmin[bestAxis], scale[bestAxis], sc.bestBin);
+    }
+
+    /** Runs {@code work.apply(k)} for the parts k = 0 … c − 1 of a range as tasks of the build's pool, and waits for them. */
+    private static void inParts(int c, java.util.function.IntFunction<Runnable> work) {
+        RecursiveAction[] tasks = new RecursiveAction[c];
+        for (int k = 0; k < c; k++) {
+            Runnable r = work.apply(k);
+            tasks[k] = new RecursiveAction() {
+                private static final long serialVersionUID = 1L;
+
+                @Override
+                protected void compute() { r.run(); }
+            };
+        }
+        ForkJoinTask.invokeAll(tasks);
+    }
+
+    /**
+     * {@link #measure} of a range of more than {@value #PARALLEL_SPLIT_ABOVE} items on every
+     * thread of the build's pool (the top of the tree, where no other subtree runs beside it):
+     * each part measured apart, then their minima and maxima taken, which are exact, so the
+     * result is that of one pass.
+     */
+    private void measureInParts(int lo, int hi, Scratch sc) {
+        int c = Parallel.threads;
+        Scratch[] parts = new Scratch[c];
+        for (int k = 0; k < c; k++) parts[k] = new Scratch();
+        inParts(c, k -> () -> measure(Parallel.start(hi - lo, c, k) + lo, Parallel.start(hi - lo, c, k + 1) + lo, parts[k]));
+        measure(lo, lo, sc);
+        for (Scratch p : parts) {
+            for (int a = 0; a < 3; a++) {
+                if (p.box[a] < sc.box[a]) sc.box[a] = p.box[a];
+                if (p.box[3 + a] > sc.box[3 + a]) sc.box[3 + a] = p.box[3 + a];
+                if (p.cmin[a] < sc.cmin[a]) sc.cmin[a] = p.cmin[a];
+                if (p.cmax[a] > sc.cmax[a]) sc.cmax[a] = p.cmax[a];
+            }
+        }
+    }
+
+    /**
+     * {@link #binAxis} of a large range on every thread of the build's pool, as {@link
+     * #measureInParts}: each part bins into bins of its own, which are then added up (counts)
+     * and united (boxes, exact), so the bins are those of one pass.
+     */
+    private int binAxisInParts(int lo, int hi, Scratch sc, int axis) {
+        int c = Parallel.threads;
+        Scratch[] parts = new Scratch[c];
+        int[] masks = new int[c];
+        for (int k = 0; k < c; k++) {
+            parts[k] = new Scratch();
+            System.arraycopy(sc.scale, 0, parts[k].scale, 0, 3);
+            System.arraycopy(sc.cmin, 0, parts[k].cmin, 0, 3);
+        }
+        inParts(c, k -> () -> masks[k] = binAxis(Parallel.start(hi - lo, c, k) + lo, Parallel.start(hi - lo, c, k + 1) + lo, parts[k], axis));
+        int base = axis * BINS, mask = 0;
+        for (int k = 0; k < c; k++) {
+            mask |= masks[k];
+            for (int m = masks[k]; m != 0; m &= m - 1) {
+                int b = base + Integer.numberOfTrailingZeros(m);
+                sc.binCount[b] += parts[k].binCount[b];
+                grow(sc.binBox, b, parts[k].binBox, b);
+            }
+        }
+        return mask;
     }
 
     /** One pass for the box of [lo, hi) and the bounds of its centroids (into sc). */

@@ -39,13 +39,26 @@ final class Materials {
     /** Open addressing: index + 1 of the material in each slot, 0 when the slot is free. */
     private int[] table = new int[16];
     private final double[] values = new double[STRIDE];
-    /** Scenes often give many objects one Material object: the last answer is kept. */
-    private Material last;
-    private int lastIndex;
+    /**
+     * Scenes often give many objects a few Material objects (one, or a palette taken in turn): the
+     * answers for recent objects are kept by identity, so such a scene hashes each object's
+     * values once, not once per primitive.
+     */
+    private final Material[] recent = new Material[RECENT];
+    private final int[] recentIndex = new int[RECENT];
+    private static final int RECENT = 64;
 
     /** The index of {@code m}, adding it on first use. */
     int indexOf(Material m) {
-        if (m == last) return lastIndex;
+        int r = System.identityHashCode(m) & (RECENT - 1);
+        if (recent[r] == m) return recentIndex[r];
+        int k = search(m);
+        recent[r] = m;
+        recentIndex[r] = k;
+        return k;
+    }
+
+    private int search(Material m) {
         double[] v = values;
         v[R] = m.color().r();
         v[G] = m.color().g();
@@ -101,8 +114,6 @@ final class Materials {
             }
             slot = (slot + 1) & mask;
         }
-        last = m;
-        lastIndex = k;
         return k;
     }
 

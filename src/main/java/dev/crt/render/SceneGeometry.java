@@ -32,55 +32,57 @@ final class SceneGeometry {
      * by picking and passes, never on the render path.
      */
     final int[] owner;
-    private int[] owners = new int[16];
+    private int[] owners;
 
     SceneGeometry(List<Entity> entities) {
         // First pass, in the scene's order: every primitive flattened with its material (kept, to
         // be copied in the second pass), and the bounds of every entity, to build the hierarchy.
+        // The stores are sized for one shape per entity up front: growing arrays of a million
+        // shapes by doubling copied them about twice over.
+        int m = entities.size();
         Shapes firstShapes = new Shapes().sharingMeshesWith(shapes);
+        firstShapes.reserve(m, 5 * m);
         CsgSolids probeCsg = new CsgSolids();
         Materials probeMaterials = new Materials();
-        List<Entity> bounded = new ArrayList<>();
-        List<Entity> infinite = new ArrayList<>();
-        // Per bounded and per unbounded entity, its index in the scene's list.
-        int[] boundedIndex = new int[16];
+        // Per bounded entity, its index in the scene's list, and in firstShapes (−1 for a CSG tree).
+        int[] boundedIndex = new int[m];
+        int[] boundedShape = new int[m];
         List<Integer> infiniteIndex = new ArrayList<>();
-        int index = -1;
-        // Per bounded or unbounded entity, its index in firstShapes, or −1 for a CSG tree.
-        int[] boundedShape = new int[16];
         List<Integer> infiniteShape = new ArrayList<>();
-        double[] flat = new double[6 * 16];
-        Aabb[] out = new Aabb[1];
-        for (Entity e : entities) {
-            index++;
-            Aabb b;
+        int n = 0;
+        double[] flat = new double[6 * m];
+        for (int index = 0; index < m; index++) {
+            Entity e = entities.get(index);
             int s = -1;
             if (e instanceof Primitive p) {
                 s = firstShapes.add(p, p.transform(), 0);
-                b = firstShapes.bounds(s);
-            } else {
-                b = probeCsg.bounds((Csg) e, Transform.IDENTITY, firstShapes, q -> probeMaterials.indexOf(q.material()));
+                if (firstShapes.kind[s] == Shapes.SPHERE) {
+                    // Never empty (radius > 0); its material is numbered as any visible primitive's.
+                    firstShapes.material[s] = materials.indexOf(p.material());
+                    // A sphere's bounds written straight in, as BvhBuilder.put writes Aabb's.
+                    if (!sphereBounds(firstShapes.data, firstShapes.offset[s], flat, n)) {
+                        infiniteIndex.add(index);
+                        infiniteShape.add(s);
+                        continue;
+                    }
+                    boundedShape[n] = s;
+                    boundedIndex[n++] = index;
+                    continue;
+                }
             }
+            Aabb b = s >= 0 ? firstShapes.bounds(s)
+                    : probeCsg.bounds((Csg) e, Transform.IDENTITY, firstShapes, q -> probeMaterials.indexOf(q.material()));
             if (b.isEmpty()) continue;
             if (s >= 0) firstShapes.material[s] = materials.indexOf(((Primitive) e).material());
             if (b.isFinite()) {
-                int i = bounded.size();
-                bounded.add(e);
-                if (i == boundedShape.length) {
-                    boundedShape = Arrays.copyOf(boundedShape, 2 * i);
-                    boundedIndex = Arrays.copyOf(boundedIndex, 2 * i);
-                    flat = Arrays.copyOf(flat, 12 * i);
-                }
-                boundedShape[i] = s;
-                boundedIndex[i] = index;
-                BvhBuilder.put(b, flat, i);
+                boundedShape[n] = s;
+                boundedIndex[n] = index;
+                BvhBuilder.put(b, flat, n++);
             } else {
-                infinite.add(e);
-                infiniteShape.add(s);
                 infiniteIndex.add(index);
+                infiniteShape.add(s);
             }
         }
-        int n = bounded.size();
         int[] order = new int[n];
         if (n > LINEAR_LIMIT) {
             bvh = BvhBuilder.build(flat, n, order);
@@ -88,20 +90,61 @@ final class SceneGeometry {
             for (int i = 0; i < n; i++) order[i] = i;
             bvh = null;
         }
+        flat = null;
         // Second pass: the flat data, laid out in traversal order for locality. A primitive is
         // copied from the first pass rather than flattened again, which would visit the scene's
-        // objects in a scattered order.
+        // objects in a scattered order; runs of primitives are copied array by array.
+        shapes.reserve(firstShapes.count(), firstShapes.dataSize());
+        owners = new int[Math.max(16, firstShapes.count())];
+        Aabb[] out = new Aabb[1];
         items = new int[n];
-        for (int i = 0; i < n; i++) {
-            int k = order[i];
-            items[i] = place(bounded.get(k), boundedShape[k], boundedIndex[k], firstShapes, out);
+        int[] src = new int[n];
+        for (int i = 0; i < n; ) {
+            int j = i;
+            while (j < n && boundedShape[order[j]] >= 0) {
+                src[j] = boundedShape[order[j]];
+                j++;
+            }
+            if (j > i) {
+                int from = shapes.count();
+                shapes.copyAll(firstShapes, src, i, j);
+                if (shapes.count() > owners.length) owners = Arrays.copyOf(owners, Math.max(shapes.count(), 2 * owners.length));
+                for (int k = i; k < j; k++) {
+                    items[k] = from + k - i;
+                    owners[from + k - i] = boundedIndex[order[k]];
+                }
+                i = j;
+            } else {
+                int k = order[i];
+                items[i++] = place(entities.get(boundedIndex[k]), -1, boundedIndex[k], firstShapes, out);
+            }
         }
-        unbounded = new int[infinite.size()];
+        unbounded = new int[infiniteIndex.size()];
         for (int i = 0; i < unbounded.length; i++) {
-            unbounded[i] = place(infinite.get(i), infiniteShape.get(i), infiniteIndex.get(i), firstShapes, out);
+            int index = infiniteIndex.get(i);
+            unbounded[i] = place(entities.get(index), infiniteShape.get(i), index, firstShapes, out);
         }
         owner = Arrays.copyOf(owners, shapes.count());
         owners = null;
+    }
+
+    /**
+     * Writes the bounds of the SPHERE at {@code o} of {@code data} as item {@code i} of a flat
+     * bounds array, with the arithmetic of {@link SphereShape#bounds} and {@link BvhBuilder#put};
+     * returns false, writing nothing, when they are not finite.
+     */
+    private static boolean sphereBounds(double[] data, int o, double[] flat, int i) {
+        double x = data[o], y = data[o + 1], z = data[o + 2], r = data[o + 3];
+        double x0 = x - r, y0 = y - r, z0 = z - r, x1 = x + r, y1 = y + r, z1 = z + r;
+        if (!(Double.isFinite(x0) && Double.isFinite(y0) && Double.isFinite(z0)
+                && Double.isFinite(x1) && Double.isFinite(y1) && Double.isFinite(z1))) return false;
+        flat[6 * i] = Math.nextDown(x0);
+        flat[6 * i + 1] = Math.nextDown(y0);
+        flat[6 * i + 2] = Math.nextDown(z0);
+        flat[6 * i + 3] = Math.nextUp(x1);
+        flat[6 * i + 4] = Math.nextUp(y1);
+        flat[6 * i + 5] = Math.nextUp(z1);
+        return true;
     }
 
     /** Flattens entity number {@code index} of the scene; the shapes it adds are recorded as its own. */

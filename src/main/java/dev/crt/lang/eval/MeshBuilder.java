@@ -121,12 +121,19 @@ final class MeshBuilder {
             double vx = positions[3 * c] - positions[3 * a], vy = positions[3 * c + 1] - positions[3 * a + 1];
             double vz = positions[3 * c + 2] - positions[3 * a + 2];
             double nx = uy * vz - uz * vy, ny = uz * vx - ux * vz, nz = ux * vy - uy * vx;
-            for (int p : new int[] {a, b, c}) {
-                smooth[3 * p] += nx;
-                smooth[3 * p + 1] += ny;
-                smooth[3 * p + 2] += nz;
-            }
+            smooth[3 * a] += nx;
+            smooth[3 * a + 1] += ny;
+            smooth[3 * a + 2] += nz;
+            smooth[3 * b] += nx;
+            smooth[3 * b + 1] += ny;
+            smooth[3 * b + 2] += nz;
+            smooth[3 * c] += nx;
+            smooth[3 * c + 1] += ny;
+            smooth[3 * c + 2] += nz;
         }
+        boolean simple = true;
+        for (int i = 0; i < cornerCount; i += 3) simple &= corners[i + 1] < 0 && corners[i + 2] < 0;
+        if (simple) return finishSimple(name, triangles, smooth, closed);
         boolean anyUv = false;
         for (int i = 0; i < cornerCount; i += 3) anyUv |= corners[i + 1] >= 0;
         // One vertex per distinct corner triple.
@@ -136,23 +143,16 @@ final class MeshBuilder {
         double[] outUvs = anyUv ? new double[2 * Math.max(positionCount, 1)] : null;
         int[] outTriangles = new int[3 * triangles];
         int vertices = 0;
-        boolean simple = true;
-        for (int i = 0; i < cornerCount; i += 3) simple &= corners[i + 1] < 0 && corners[i + 2] < 0;
         for (int k = 0; k < 3 * triangles; k++) {
             int p = corners[3 * k], uv = corners[3 * k + 1], n = corners[3 * k + 2];
-            int v;
-            if (simple) {
-                v = p;
-            } else {
-                Corner key = new Corner(p, uv, n);
-                Integer found = vertexOf.get(key);
-                if (found != null) {
-                    outTriangles[k] = found;
-                    continue;
-                }
-                v = vertices++;
-                vertexOf.put(key, v);
+            Corner key = new Corner(p, uv, n);
+            Integer found = vertexOf.get(key);
+            if (found != null) {
+                outTriangles[k] = found;
+                continue;
             }
+            int v = vertices++;
+            vertexOf.put(key, v);
             outTriangles[k] = v;
             if (3 * v + 3 > outPositions.length) {
                 int size = Math.max(3 * v + 3, outPositions.length * 2);
@@ -180,9 +180,37 @@ final class MeshBuilder {
                 outUvs[2 * v + 1] = uvs[2 * uv + 1];
             }
         }
-        if (simple) vertices = positionCount;
         return new MeshData(name, Arrays.copyOf(outPositions, 3 * vertices), outTriangles,
                 Arrays.copyOf(outNormals, 3 * vertices), outUvs == null ? null : Arrays.copyOf(outUvs, 2 * vertices), closed);
+    }
+
+    /**
+     * {@link #finish} for a mesh of positions alone (no uv, no normal given: most large files): a
+     * vertex per position, each written once rather than once per corner using it. A position no
+     * triangle uses stays at the origin with a zero normal, as in the general case.
+     */
+    private MeshData finishSimple(String name, int triangles, double[] smooth, boolean closed) {
+        int[] outTriangles = new int[3 * triangles];
+        boolean[] used = new boolean[positionCount];
+        for (int k = 0; k < 3 * triangles; k++) {
+            int p = corners[3 * k];
+            outTriangles[k] = p;
+            used[p] = true;
+        }
+        double[] outPositions = new double[3 * positionCount];
+        double[] outNormals = new double[3 * positionCount];
+        for (int p = 0; p < positionCount; p++) {
+            if (!used[p]) continue;
+            outPositions[3 * p] = positions[3 * p];
+            outPositions[3 * p + 1] = positions[3 * p + 1];
+            outPositions[3 * p + 2] = positions[3 * p + 2];
+            double nx = smooth[3 * p], ny = smooth[3 * p + 1], nz = smooth[3 * p + 2];
+            double l = Math.sqrt(nx * nx + ny * ny + nz * nz);
+            outNormals[3 * p] = l > 0 ? nx / l : 0;
+            outNormals[3 * p + 1] = l > 0 ? ny / l : 0;
+            outNormals[3 * p + 2] = l > 0 ? nz / l : 0;
+        }
+        return new MeshData(name, outPositions, outTriangles, outNormals, null, closed);
     }
 
     /**

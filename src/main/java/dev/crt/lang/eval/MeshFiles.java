@@ -208,6 +208,10 @@ final class MeshFiles {
                 countTypes[k] = p.countType() == null ? -1 : code(p.countType());
             }
             Place where = new Place(e.name());
+            if (in instanceof BinaryReader binary) {
+                if (vertex && binaryVertices(binary, e, types, countTypes, x, y, z, nx, ny, nz, u, v, b, where)) continue;
+                if (face && binaryFaces(binary, e, types, countTypes, b, where)) continue;
+            }
             for (long i = 0; i < e.count(); i++) {
                 where.index = i;
                 try {
@@ -256,6 +260,109 @@ final class MeshFiles {
                 }
             }
         }
+    }
+
+    /**
+     * Binary vertices whose properties are all scalars, read at fixed offsets of a fixed stride
+     * (the common case, and most of a large file) rather than value by value; false, reading
+     * nothing, for any other layout. The same values and problems as the general loop.
+     */
+    private static boolean binaryVertices(BinaryReader in, Element e, int[] types, int[] countTypes, int x, int y, int z,
+            int nx, int ny, int nz, int u, int v, MeshBuilder b, Place where) throws MeshProblem {
+        int[] at = new int[types.length];
+        int stride = 0;
+        for (int k = 0; k < types.length; k++) {
+            if (countTypes[k] >= 0) return false;
+            at[k] = stride;
+            stride += width(types[k]);
+        }
+        boolean normals = nx >= 0 && ny >= 0 && nz >= 0, uvs = u >= 0 && v >= 0;
+        ByteBuffer buffer = in.buffer;
+        int pos = buffer.position(), limit = buffer.limit();
+        for (long i = 0; i < e.count(); i++, pos += stride) {
+            where.index = i;
+            if (pos + stride > limit) {
+                throw new MeshProblem("the file ends at " + e.name() + " " + i + " of " + e.count() + " " + e.name() + " elements (truncated?)");
+            }
+            b.position(value(buffer, pos + at[x], types[x]), value(buffer, pos + at[y], types[y]), value(buffer, pos + at[z], types[z]), where);
+            if (normals) {
+                b.normal(value(buffer, pos + at[nx], types[nx]), value(buffer, pos + at[ny], types[ny]),
+                        value(buffer, pos + at[nz], types[nz]), where);
+            }
+            if (uvs) b.uv(value(buffer, pos + at[u], types[u]), value(buffer, pos + at[v], types[v]), where);
+        }
+        buffer.position(pos);
+        return true;
+    }
+
+    /**
+     * Binary faces made of the vertex index list alone, with an 8-bit length and 32-bit indices
+     * (the common case), read without going value by value; false, reading nothing, for any
+     * other layout. The same polygons and problems as the general loop.
+     */
+    private static boolean binaryFaces(BinaryReader in, Element e, int[] types, int[] countTypes, MeshBuilder b, Place where)
+            throws MeshProblem {
+        if (types.length != 1 || !(countTypes[0] == UINT8 || countTypes[0] == INT8) || !(types[0] == INT32 || types[0] == UINT32)) {
+            return false;
+        }
+        boolean unsigned = types[0] == UINT32, signedCount = countTypes[0] == INT8;
+        ByteBuffer buffer = in.buffer;
+        int pos = buffer.position(), limit = buffer.limit();
+        int[] corners = new int[3 * 256];
+        for (long i = 0; i < e.count(); i++) {
+            where.index = i;
+            if (pos >= limit) throw truncated(e, i);
+            int n = signedCount ? buffer.get(pos) : buffer.get(pos) & 0xff;
+            if (n < 0) throw new MeshProblem(where + "a list length of " + (double) n);
+            pos++;
+            if (pos + 4L * n > limit) throw truncated(e, i);
+            for (int c = 0; c < n; c++, pos += 4) {
+                int index = buffer.getInt(pos);
+                // As the general loop: a value beyond ±(2³¹ − 1) is no index.
+                if (unsigned && index < 0 || index == Integer.MIN_VALUE) {
+                    double value = unsigned ? index & 0xffffffffL : index;
+                    throw new MeshProblem(where + "vertex index " + value + " is not a whole number");
+                }
+                corners[3 * c] = index;
+            }
+            // Faces of positions alone: every corner's uv and normal are those of its position
+            // when the vertices gave them, none otherwise.
+            boolean normals = b.normals() == b.positions(), uvs = b.uvs() == b.positions();
+            for (int c = 0; c < n; c++) {
+                corners[3 * c + 1] = uvs ? corners[3 * c] : -1;
+                corners[3 * c + 2] = normals ? corners[3 * c] : -1;
+            }
+            b.polygon(corners, n, where);
+        }
+        buffer.position(pos);
+        return true;
+    }
+
+    private static MeshProblem truncated(Element e, long i) {
+        return new MeshProblem("the file ends at " + e.name() + " " + i + " of " + e.count() + " " + e.name() + " elements (truncated?)");
+    }
+
+    private static int width(int type) {
+        return switch (type) {
+            case INT8, UINT8 -> 1;
+            case INT16, UINT16 -> 2;
+            case INT32, UINT32, FLOAT32 -> 4;
+            default -> 8;
+        };
+    }
+
+    /** The value of {@code type} at {@code pos} of a little-endian buffer, as {@link BinaryReader#next} reads it. */
+    private static double value(ByteBuffer buffer, int pos, int type) {
+        return switch (type) {
+            case INT8 -> buffer.get(pos);
+            case UINT8 -> buffer.get(pos) & 0xff;
+            case INT16 -> buffer.getShort(pos);
+            case UINT16 -> buffer.getShort(pos) & 0xffff;
+            case INT32 -> buffer.getInt(pos);
+            case UINT32 -> buffer.getInt(pos) & 0xffffffffL;
+            case FLOAT32 -> buffer.getFloat(pos);
+            default -> buffer.getDouble(pos);
+        };
     }
 
     private static int find(Element e, String name) {
@@ -308,7 +415,7 @@ final class MeshFiles {
     }
 
     private static final class BinaryReader implements Reader {
-        private final ByteBuffer buffer;
+        final ByteBuffer buffer;
 
         BinaryReader(byte[] bytes, int start) {
             buffer = ByteBuffer.wrap(bytes, start, bytes.length - start).order(ByteOrder.LITTLE_ENDIAN);
