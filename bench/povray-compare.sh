@@ -6,6 +6,8 @@
 #
 # Scenes: scenes/box-field.crt and its hand-written twin bench/povray/box-field.pov; with --scene,
 # scenes/NAME.crt or bench/scenes/NAME.crt and bench/povray/NAME.pov (e.g. tori: 1,000 tori).
+# --scene spheres-written: 10,000 spheres written out literally, each with its own material (CRT)
+# and texture (POV-Ray), as exporters write scenes: the same numbers in both files, made on the fly.
 # Both use every core (CRT's default; POV-Ray +WT<cores>), one sample per pixel, PNG output.
 # POV-Ray is installed from Debian (package povray) when missing and this runs as root.
 # Results: a table on stdout (wall-clock and CPU seconds of each run, the render phase alone, CRT
@@ -21,7 +23,7 @@ height=720
 out="$here/results"
 scene=box-field
 
-usage() { sed -n '2,12p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'; }
+usage() { sed -n '2,14p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'; }
 while [ $# -gt 0 ]; do
   case "$1" in
     --scene) scene="$2"; shift 2 ;;
@@ -38,6 +40,41 @@ done
 crt_scene="$root/scenes/$scene.crt"
 [ -f "$crt_scene" ] || crt_scene="$here/scenes/$scene.crt"
 pov_scene="$here/povray/$scene.pov"
+if [ "$scene" = spheres-written ]; then
+  written="$(mktemp -d)"
+  trap 'rm -rf "$written"' EXIT
+  crt_scene="$written/spheres-written.crt"
+  pov_scene="$written/spheres-written.pov"
+  # bench/scenes/spheres.crt and bench/povray/spheres.pov (camera, light, finish) with every sphere
+  # and its material written out; a fixed linear congruential generator makes the numbers.
+  awk -v n=10000 -v crt="$crt_scene" -v pov="$pov_scene" 'BEGIN {
+    print "Settings {" > crt
+    print "  camera -> Camera { position -> vec3(0, 0, -32) pointing -> vec3(0, 0, 0) fov -> 40 }" > crt
+    print "  lights -> [ PointLight { origin -> vec3(-30, 40, -50) color -> rgb(0.8, 0.8, 0.8) ambient -> 0.2 } ]" > crt
+    print "  background -> Background { color -> rgb(0.05, 0.05, 0.08) }" > crt
+    print "  recursiondepth -> 0" > crt
+    print "}" > crt
+    print "Scene {" > crt
+    print "#version 3.7;" > pov
+    print "global_settings { assumed_gamma 1.0 max_trace_level 1 adc_bailout 0 ambient_light rgb 0.16 }" > pov
+    print "camera { perspective location <0, 0, -32> look_at <0, 0, 0> right x * 16 / 9 up y" > pov
+    print "  angle 2 * degrees(atan(tan(radians(40 / 2)) * 16 / 9)) }" > pov
+    print "light_source { <-30, 40, -50> color rgb 0.8 }" > pov
+    print "background { rgb <0.05, 0.05, 0.08> }" > pov
+    s = 12345
+    r = 16 / sqrt(n)
+    for (i = 0; i < n; i++) {
+      for (k = 0; k < 6; k++) { s = (s * 1103515245 + 12345) % 2147483648; u[k] = s / 2147483648 }
+      x = sprintf("%.6f", 20 * u[0] - 10); y = sprintf("%.6f", 20 * u[1] - 10); z = sprintf("%.6f", 20 * u[2] - 10)
+      c1 = sprintf("%.4f", u[3]); c2 = sprintf("%.4f", u[4]); c3 = sprintf("%.4f", u[5])
+      printf "  Sphere {\n    center -> vec3(%s, %s, %s)\n    radius -> %.6f\n", x, y, z, r > crt
+      printf "    material -> Material {\n      color -> rgb(%s, %s, %s)\n      specular -> 0.4\n    }\n  }\n", c1, c2, c3 > crt
+      printf "sphere {\n  <%s, %s, %s>, %.6f\n  texture {\n    pigment { rgb <%s, %s, %s> }\n", x, y, z, r, c1, c2, c3 > pov
+      printf "    finish { ambient 1 diffuse 1 phong 0.4 phong_size 30 }\n  }\n}\n" > pov
+    }
+    print "}" > crt
+  }'
+fi
 if [ ! -f "$crt_scene" ] || [ ! -f "$pov_scene" ]; then
   echo "povray-compare: no scene '$scene': need scenes/$scene.crt or bench/scenes/$scene.crt, and bench/povray/$scene.pov" >&2
   exit 2
@@ -75,7 +112,7 @@ mkdir -p "$out"
 out="$(cd "$out" && pwd)"
 if [ "$scene" = box-field ]; then csv="$out/povray-compare.csv"; else csv="$out/povray-compare-$scene.csv"; fi
 work="$(mktemp -d)"
-trap 'rm -rf "$work"' EXIT
+trap 'rm -rf "$work" ${written:+"$written"}' EXIT
 
 crt_cmd=("$root/crt" render "$crt_scene" -o "$out/$scene-crt.png" --width "$width" --height "$height" --stats)
 # -D no display, -A no antialiasing (NB: +A0 would turn antialiasing ON with threshold 0),
