@@ -45,7 +45,10 @@ final class EdtWatchdog implements AutoCloseable {
                 } else {
                     longestNanos.accumulateAndGet(waited, Math::max);
                     if (stack != null) {
-                        System.out.println("EDT watchdog: a stall of " + waited / 1_000_000 + " ms; " + PRINT_NANOS / 1_000_000 + " ms into it the EDT was at:\n" + stack);
+                        // The JVM's uptime at the stall's start, to line it up with -Xlog:gc's stamps.
+                        long began = java.lang.management.ManagementFactory.getRuntimeMXBean().getUptime() - waited / 1_000_000;
+                        System.out.println("EDT watchdog: a stall of " + waited / 1_000_000 + " ms from " + began / 1000.0 + " s of uptime; "
+                                + PRINT_NANOS / 1_000_000 + " ms into it the EDT was at:\n" + stack);
                     }
                 }
                 try {

@@ -26,6 +26,7 @@ public final class StudioBench {
             box[0].show(List.of());
         });
         StudioWindow studio = box[0];
+        EdtProfile profile = Boolean.getBoolean("crt.bench.edtProfile") ? EdtProfile.install() : null;
         try (EdtWatchdog watchdog = new EdtWatchdog()) {
             // 1. Keystroke to squiggle on a 2,500-line script.
             StringBuilder big = new StringBuilder("Settings { width -> 80 height -> 60 }\n");
@@ -38,6 +39,8 @@ public final class StudioBench {
             SwingUtilities.invokeAndWait(() -> doc[0] = studio.model().open(big.toString(), null, null));
             waitUntil(() -> doc[0].resultIsCurrent());
             watchdog.reset();
+            System.out.println("typing from " + uptimeSeconds() + " s of uptime");
+            if (profile != null) profile.start();
             long[] samples = new long[5];
             for (int k = 0; k < samples.length; k++) {
                 boolean error = k % 2 == 0;
@@ -55,6 +58,8 @@ public final class StudioBench {
                                 .anyMatch(n -> n.getLevel() == org.fife.ui.rsyntaxtextarea.parser.ParserNotice.Level.ERROR) == error);
                 samples[k] = System.nanoTime() - start[0];
             }
+            System.out.println("typing done at " + uptimeSeconds() + " s of uptime");
+            if (profile != null) profile.stopAndPrint("the five keystrokes");
             long compileStart = System.nanoTime();
             dev.crt.lang.CrtCompiler.compile(doc[0].source(), LiveCompiler.OPTIONS);
             long compileNanos = System.nanoTime() - compileStart;
@@ -93,6 +98,10 @@ public final class StudioBench {
             studio.quit();
         });
         System.exit(0);
+    }
+
+    private static double uptimeSeconds() {
+        return java.lang.management.ManagementFactory.getRuntimeMXBean().getUptime() / 1000.0;
     }
 
     private static <T> T onEdt(java.util.function.Supplier<T> s) throws Exception {
