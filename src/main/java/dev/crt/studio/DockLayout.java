@@ -73,7 +73,7 @@ final class DockLayout {
 
     /** Adds a panel; call before {@link #resetLayout} or {@link #restore}. */
     void register(StudioPanel panel) {
-        DefaultSingleCDockable d = new DefaultSingleCDockable(panel.id(), panel.title(), panel.content());
+        DefaultSingleCDockable d = new DefaultSingleCDockable(panel.id(), panel.title(), new LayoutBoundary(panel.content()));
         d.setCloseable(false);
         d.setExternalizable(true);
         d.setMinimizable(true);

@@ -495,7 +495,7 @@ final class StudioWindow implements StudioModel.Listener {
         bar.add(caretStatus, BorderLayout.LINE_START);
         bar.add(middle, BorderLayout.CENTER);
         bar.add(heapStatus, BorderLayout.LINE_END);
-        return bar;
+        return new LayoutBoundary(bar);
     }
 
     /** Every action with a key works wherever the focus is in the window, also inside the editor. */

@@ -36,7 +36,7 @@ final class EdtProfile extends EventQueue {
         return p;
     }
 
-    /** Counts the repaints asked for while the profile is on, by component and the code that asked. */
+    /** Counts the repaints and revalidations asked for while the profile is on, by component and the code that asked. */
     private final Map<String, long[]> repaints = new HashMap<>();
 
     private void installRepaintCounter() {
@@ -46,23 +46,37 @@ final class EdtProfile extends EventQueue {
         });
         javax.swing.RepaintManager.setCurrentManager(new javax.swing.RepaintManager() {
             @Override
-            public void addDirtyRegion(javax.swing.JComponent c, int x, int y, int w, int h) {
-                if (on && w > 0 && h > 0) {
-                    String asker = "?";
-                    for (StackTraceElement f : new Throwable().getStackTrace()) {
-                        String cl = f.getClassName();
-                        if (cl.startsWith("java.") || cl.startsWith("javax.") || cl.startsWith("sun.") || cl.startsWith("dev.crt.studio.EdtProfile")) continue;
-                        asker = cl + "." + f.getMethodName() + ":" + f.getLineNumber();
-                        break;
-                    }
-                    synchronized (repaints) {
-                        long[] s = repaints.computeIfAbsent(c.getClass().getSimpleName() + " " + w + "x" + h + " from " + asker, k -> new long[1]);
-                        s[0]++;
-                    }
+            public void addInvalidComponent(javax.swing.JComponent c) {
+                if (on) {
+                    java.awt.Container root = c;
+                    while (root != null && !root.isValidateRoot()) root = root.getParent();
+                    count("revalidate " + c.getClass().getSimpleName() + " up to " + (root == null ? null : root.getClass().getSimpleName()) + " from " + asker());
                 }
+                super.addInvalidComponent(c);
+            }
+
+            @Override
+            public void addDirtyRegion(javax.swing.JComponent c, int x, int y, int w, int h) {
+                if (on && w > 0 && h > 0) count(c.getClass().getSimpleName() + " " + w + "x" + h + " from " + asker());
                 super.addDirtyRegion(c, x, y, w, h);
             }
         });
+    }
+
+    private void count(String what) {
+        synchronized (repaints) {
+            repaints.computeIfAbsent(what, k -> new long[1])[0]++;
+        }
+    }
+
+    /** The first caller outside the JDK and this class. */
+    private static String asker() {
+        for (StackTraceElement f : new Throwable().getStackTrace()) {
+            String cl = f.getClassName();
+            if (cl.startsWith("java.") || cl.startsWith("javax.") || cl.startsWith("sun.") || cl.startsWith("dev.crt.studio.EdtProfile")) continue;
+            return cl + "." + f.getMethodName() + ":" + f.getLineNumber();
+        }
+        return "?";
     }
 
     private static String name(Object c) {
@@ -127,7 +141,7 @@ final class EdtProfile extends EventQueue {
             System.out.println("events over 10 ms of CPU or 30 ms of wall time:");
             longest.forEach(System.out::println);
             synchronized (repaints) {
-                if (!repaints.isEmpty()) System.out.println("repaints asked for:");
+                if (!repaints.isEmpty()) System.out.println("repaints and revalidations asked for:");
                 repaints.entrySet().stream().sorted((a, b) -> Long.compare(b.getValue()[0], a.getValue()[0]))
                         .forEach(e -> System.out.printf("  %4d × %s%n", e.getValue()[0], e.getKey()));
                 repaints.clear();
