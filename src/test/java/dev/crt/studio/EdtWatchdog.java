@@ -15,6 +15,8 @@ import javax.swing.SwingUtilities;
 final class EdtWatchdog implements AutoCloseable {
     private final Thread thread;
     private volatile boolean running = true;
+    /** The Event Dispatch Thread, as the last event the watchdog posted found it. */
+    private volatile Thread edt;
     private final java.util.concurrent.atomic.AtomicLong longestNanos = new java.util.concurrent.atomic.AtomicLong();
     private final java.util.concurrent.atomic.AtomicLong robotSyncNanos = new java.util.concurrent.atomic.AtomicLong();
 
@@ -26,7 +28,10 @@ final class EdtWatchdog implements AutoCloseable {
             while (running) {
                 long start = System.nanoTime();
                 java.util.concurrent.CountDownLatch ran = new java.util.concurrent.CountDownLatch(1);
-                SwingUtilities.invokeLater(ran::countDown);
+                SwingUtilities.invokeLater(() -> {
+                    edt = Thread.currentThread();
+                    ran.countDown();
+                });
                 boolean robotSync = false;
                 String stack = null;
                 try {
@@ -45,7 +50,10 @@ final class EdtWatchdog implements AutoCloseable {
                 } else {
                     longestNanos.accumulateAndGet(waited, Math::max);
                     if (stack != null) {
-                        System.out.println("EDT watchdog: a stall of " + waited / 1_000_000 + " ms; " + PRINT_NANOS / 1_000_000 + " ms into it the EDT was at:\n" + stack);
+                        // The JVM's uptime at the stall's start, to line it up with -Xlog:gc's stamps.
+                        long began = java.lang.management.ManagementFactory.getRuntimeMXBean().getUptime() - waited / 1_000_000;
+                        System.out.println("EDT watchdog: a stall of " + waited / 1_000_000 + " ms from " + began / 1000.0 + " s of uptime; "
+                                + PRINT_NANOS / 1_000_000 + " ms into it the EDT was at:\n" + stack);
                     }
                 }
                 try {
@@ -59,13 +67,17 @@ final class EdtWatchdog implements AutoCloseable {
         thread.start();
     }
 
-    private static String edtStack() {
+    /**
+     * The EDT's stack, asked of that thread alone: every thread's stack at once
+     * ({@code Thread.getAllStackTraces}) stops the whole JVM at a safepoint, which took 2 to 48 ms
+     * on the loaded machine, every 50 ms of a stall, and so lengthened the stalls it measured.
+     */
+    private String edtStack() {
+        Thread t = edt;
         StringBuilder b = new StringBuilder();
-        for (var e : Thread.getAllStackTraces().entrySet()) {
-            if (!e.getKey().getName().startsWith("AWT-EventQueue")) continue;
-            StackTraceElement[] frames = e.getValue();
-            for (int i = 0; i < Math.min(frames.length, Integer.getInteger("crt.watchdog.frames", 14)); i++) b.append("    at ").append(frames[i]).append('\n');
-        }
+        if (t == null) return "";
+        StackTraceElement[] frames = t.getStackTrace();
+        for (int i = 0; i < Math.min(frames.length, Integer.getInteger("crt.watchdog.frames", 14)); i++) b.append("    at ").append(frames[i]).append('\n');
         return b.toString();
     }
 
