@@ -349,11 +349,20 @@ final class ObjectBuilder {
         Material d = Material.DEFAULT;
         Finish f = Finish.NONE;
         Texture texture = a.texture("color"), emission = a.texture("emission");
-        Finish finish = new Finish(emission, a.texture("specular"), a.texture("reflectivity"), a.texture("transparency"),
-                a.requiredTexture("bump"), a.number("bumpscale", f.bumpScale(), Range.ANY),
-                a.number("roughness", f.roughness(), Range.UNIT), a.integer("glossysamples", f.glossySamples(), 1, MAX_GLOSSY_SAMPLES),
-                choice(a, "model", ShadingModel.PHONG, ShadingModel.values(), ShadingModel::scriptName),
-                a.color("cool", f.cool()), a.color("warm", f.warm()), a.number("outline", f.outline(), Range.NOT_NEGATIVE));
+        Texture specular = a.texture("specular"), reflectivity = a.texture("reflectivity"), transparency = a.texture("transparency");
+        Finish finish;
+        if (emission == null && specular == null && reflectivity == null && transparency == null && noneWritten(a, FINISH_ONLY)) {
+            // Most materials: nothing of the finish is written, so it is NONE, with nothing to check
+            // (a record's equals is slow before the JIT: a tenth of a written-out scene's compile).
+            finish = f;
+        } else {
+            finish = new Finish(emission, specular, reflectivity, transparency,
+                    a.requiredTexture("bump"), a.number("bumpscale", f.bumpScale(), Range.ANY),
+                    a.number("roughness", f.roughness(), Range.UNIT), a.integer("glossysamples", f.glossySamples(), 1, MAX_GLOSSY_SAMPLES),
+                    choice(a, "model", ShadingModel.PHONG, ShadingModel.values(), ShadingModel::scriptName),
+                    a.color("cool", f.cool()), a.color("warm", f.warm()), a.number("outline", f.outline(), Range.NOT_NEGATIVE));
+            if (finish.equals(Finish.NONE)) finish = Finish.NONE;
+        }
         return new MaterialValue(new Material(
                 texture != null ? d.color() : a.color("color", d.color()),
                 a.number("diffuse", d.diffuse(), Range.ANY),
@@ -367,7 +376,15 @@ final class ObjectBuilder {
                 a.bool("fresnel", false),
                 absorption(a),
                 texture,
-                finish.equals(Finish.NONE) ? Finish.NONE : finish));
+                finish));
+    }
+
+    /** A Material's attributes that only its {@link Finish} reads. */
+    private static final String[] FINISH_ONLY = {"bump", "bumpscale", "roughness", "glossysamples", "model", "cool", "warm", "outline"};
+
+    private static boolean noneWritten(Attributes a, String[] names) {
+        for (String n : names) if (a.written(n)) return false;
+        return true;
     }
 
     /** Glossy lobe samples per shading point are capped, as area light samples are. */
