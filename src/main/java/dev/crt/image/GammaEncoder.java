@@ -16,6 +16,9 @@ final class GammaEncoder {
         for (int k = 1; k < 256; k++) steps[k] = Math.pow((k - 0.5) / 255, gamma);
     }
 
+    /** Whether gamma is 1: the byte is then round(clamp(c, 0, 1)·255), with no search. */
+    boolean linear() { return gamma == 1; }
+
     int encode(double c) {
         if (!(c > 0)) return 0;
         if (c >= 1) return 255;

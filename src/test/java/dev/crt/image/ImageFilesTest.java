@@ -190,4 +190,29 @@ class ImageFilesTest {
             }
         }
     }
+
+    @Test
+    void rowsAtGammaOneGiveExactlyTheFormulasBytes() {
+        java.util.SplittableRandom r = new java.util.SplittableRandom(11);
+        FrameBuffer image = new FrameBuffer(1000, 3);
+        float[] data = image.data();
+        for (int i = 0; i < data.length; i++) {
+            data[i] = switch (i % 7) {
+                case 0 -> (float) (r.nextDouble() * 1.4 - 0.2);
+                case 1 -> (float) ((r.nextInt(256) + 0.5) / 255);   // where rounding decides
+                case 2 -> Math.nextDown((float) ((r.nextInt(256) + 0.5) / 255));
+                case 3 -> Float.NaN;
+                case 4 -> r.nextBoolean() ? Float.POSITIVE_INFINITY : Float.NEGATIVE_INFINITY;
+                case 5 -> r.nextBoolean() ? 1f : -0f;
+                default -> (float) r.nextDouble();
+            };
+        }
+        byte[] row = new byte[3000];
+        for (int y = 0; y < 3; y++) {
+            ImageFiles.encodeRow(image, y, new GammaEncoder(1), row);
+            for (int i = 0; i < row.length; i++) {
+                assertThat(row[i] & 0xff).as("value %s", data[y * 3000 + i]).isEqualTo(ImageFiles.toByte(data[y * 3000 + i], 1));
+            }
+        }
+    }
 }
