@@ -97,12 +97,17 @@ final class BvhBuilder {
      * bounds computed with rounding (c ± r) must not clip the solid they hold.
      */
     static void put(Aabb b, double[] flat, int i) {
-        flat[6 * i] = Math.nextDown(b.min().x());
-        flat[6 * i + 1] = Math.nextDown(b.min().y());
-        flat[6 * i + 2] = Math.nextDown(b.min().z());
-        flat[6 * i + 3] = Math.nextUp(b.max().x());
-        flat[6 * i + 4] = Math.nextUp(b.max().y());
-        flat[6 * i + 5] = Math.nextUp(b.max().z());
+        put(b.min().x(), b.min().y(), b.min().z(), b.max().x(), b.max().y(), b.max().z(), flat, i);
+    }
+
+    /** {@link #put(Aabb, double[], int)} of the box from (x0, y0, z0) to (x1, y1, z1). */
+    static void put(double x0, double y0, double z0, double x1, double y1, double z1, double[] flat, int i) {
+        flat[6 * i] = Math.nextDown(x0);
+        flat[6 * i + 1] = Math.nextDown(y0);
+        flat[6 * i + 2] = Math.nextDown(z0);
+        flat[6 * i + 3] = Math.nextUp(x1);
+        flat[6 * i + 4] = Math.nextUp(y1);
+        flat[6 * i + 5] = Math.nextUp(z1);
     }
 
     /**

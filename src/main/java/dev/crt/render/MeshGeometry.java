@@ -89,12 +89,7 @@ final class MeshGeometry {
                 z1 = Math.max(z1, positions[v + 2]);
             }
             // Widened by an ulp, as the scene's items are: a box must not clip its triangle.
-            flat[6 * t] = Math.nextDown(x0);
-            flat[6 * t + 1] = Math.nextDown(y0);
-            flat[6 * t + 2] = Math.nextDown(z0);
-            flat[6 * t + 3] = Math.nextUp(x1);
-            flat[6 * t + 4] = Math.nextUp(y1);
-            flat[6 * t + 5] = Math.nextUp(z1);
+            BvhBuilder.put(x0, y0, z0, x1, y1, z1, flat, t);
             minX = Math.min(minX, x0);
             minY = Math.min(minY, y0);
             minZ = Math.min(minZ, z0);

@@ -138,12 +138,7 @@ final class SceneGeometry {
         double x0 = x - r, y0 = y - r, z0 = z - r, x1 = x + r, y1 = y + r, z1 = z + r;
         if (!(Double.isFinite(x0) && Double.isFinite(y0) && Double.isFinite(z0)
                 && Double.isFinite(x1) && Double.isFinite(y1) && Double.isFinite(z1))) return false;
-        flat[6 * i] = Math.nextDown(x0);
-        flat[6 * i + 1] = Math.nextDown(y0);
-        flat[6 * i + 2] = Math.nextDown(z0);
-        flat[6 * i + 3] = Math.nextUp(x1);
-        flat[6 * i + 4] = Math.nextUp(y1);
-        flat[6 * i + 5] = Math.nextUp(z1);
+        BvhBuilder.put(x0, y0, z0, x1, y1, z1, flat, i);
         return true;
     }
 
