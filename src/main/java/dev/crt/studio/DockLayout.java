@@ -91,22 +91,6 @@ final class DockLayout {
         return null;
     }
 
-    /**
-     * Tells the docking library that panel {@code id} has (or is given) the focus, on
-     * {@code component}, when it thinks another panel has it. The library follows clicks, not the
-     * keyboard focus: after laying out the panels, or a click in another panel, it keeps asking for
-     * the focus of what it thinks is focused (twenty times, every 10 ms; for the panels brought to
-     * the front of their stacks at start, the window itself), and the studio handed the focus back
-     * to the editor each time: a dozen focus trades in the first second, each an X server round trip
-     * and a repaint of the whole editor (EDT stalls while typing, docs/studio.md). This request
-     * cancels the library's pending ones, and asks for nothing more.
-     */
-    void focused(String id, java.awt.Component component) {
-        DefaultSingleCDockable d = dockables.get(id);
-        if (d == null || control.getController().getFocusedDockable() == d.intern()) return;
-        control.getController().setFocusedDockable(d.intern(), component, true, false, false);
-    }
-
     /** Puts every panel where its registration says. */
     void resetLayout() {
         CGrid grid = new CGrid(control);

@@ -119,16 +119,7 @@ final class StudioWindow implements StudioModel.Listener {
      */
     private final java.beans.PropertyChangeListener frameFocus = e -> {
         if (e.getNewValue() == frame) SwingUtilities.invokeLater(this::focusEditor);
-        else if (e.getNewValue() == null && frame.isFocused()) this.nobodyFocused.restart();
     };
-    /**
-     * Nobody holding the focus in the focused window helps nobody either: with no window manager,
-     * the focus cleared by the docking library at start (see {@link DockLayout#focused}) could stay
-     * nowhere, and keys went nowhere. A moment later, if it still is so, the editor takes it.
-     */
-    private final javax.swing.Timer nobodyFocused = new javax.swing.Timer(100, e -> {
-        if (frame.isFocused() && java.awt.KeyboardFocusManager.getCurrentKeyboardFocusManager().getFocusOwner() == null) focusEditor();
-    });
 
     StudioWindow(StudioPaths paths) {
         this.paths = paths;
@@ -171,7 +162,6 @@ final class StudioWindow implements StudioModel.Listener {
         frame.addWindowListener(new WindowAdapter() {
             @Override public void windowClosing(WindowEvent e) { quit(); }
         });
-        nobodyFocused.setRepeats(false);
         java.awt.KeyboardFocusManager.getCurrentKeyboardFocusManager().addPropertyChangeListener("focusOwner", frameFocus);
         frame.setIconImages(StudioIcon.images());
         if (settings.bounds != null) frame.setBounds(settings.bounds);
@@ -515,11 +505,6 @@ final class StudioWindow implements StudioModel.Listener {
         ScriptEditor editor = new ScriptEditor(d);
         editor.applyTheme(settings.dark);
         editors.put(d, editor);
-        editor.area().addFocusListener(new java.awt.event.FocusAdapter() {
-            @Override public void focusGained(java.awt.event.FocusEvent e) {
-                if (!e.isTemporary()) dock.focused("script", editor.area());
-            }
-        });
         // The editor's own keys (undo, comment, completion, Esc for its popups) stay; the studio's
         // file, render and find keys take precedence over any default text binding.
         for (String n : new String[] {"new", "open", "save", "saveAs", "close", "quit", "find", "replace", "render",
@@ -625,7 +610,6 @@ final class StudioWindow implements StudioModel.Listener {
         if (!frame.isFocused()) e.area().requestFocus();
         e.area().requestFocusInWindow();
         SwingUtilities.invokeLater(() -> e.area().requestFocusInWindow());
-        dock.focused("script", e.area());
     }
 
     // ---------------------------------------------------------------- files
@@ -751,7 +735,6 @@ final class StudioWindow implements StudioModel.Listener {
             JOptionPane.showMessageDialog(frame, "Cannot save the studio's settings: " + e.getMessage());
         }
         java.awt.KeyboardFocusManager.getCurrentKeyboardFocusManager().removePropertyChangeListener("focusOwner", frameFocus);
-        nobodyFocused.stop();
         diskWatch.stop();
         heapTimer.stop();
         recovery.stop();
@@ -855,7 +838,6 @@ final class StudioWindow implements StudioModel.Listener {
         d.ifPresent(doc -> {
             model.setCurrent(doc);
             dock.dockable("script").toFront();
-            dock.focused("script", editors.get(doc).area());
             editors.get(doc).goTo(line, column);
         });
     }
@@ -979,7 +961,6 @@ final class StudioWindow implements StudioModel.Listener {
         model.select(d, e, pick.get().entityIndex());
         if (e.span().line() > 0) {
             ScriptEditor editor = editors.get(d);
-            dock.focused("script", editor.area());
             editor.goTo(e.span().start());
             editor.area().select(e.span().start(), Math.min(e.span().end(), d.text().getLength()));
         }
