@@ -466,13 +466,7 @@ public final class LiveRenderer implements AutoCloseable {
             glFrontFace(frontFace(view));
             glBindVertexArray(cubeVao);
             glBindBuffer(GL_ARRAY_BUFFER, instanceVbo);
-            for (int k = 0; k < KINDS; k++) {
-                int from = boundedKindStart[k], count = boundedKindStart[k + 1] - from;
-                if (count == 0) continue;
-                useGeometryProgram(geometryProgram(true, k), view, x, glY, w, h, overlay, false);
-                instanceAttributes(28L * from);
-                glDrawArraysInstanced(GL_TRIANGLES, 0, 36, count);
-            }
+            drawByKind(boundedKindStart, 36, view, x, glY, w, h, overlay, false);
             if (csgInstances > 0) {
                 useGeometryProgram(geometryProgram(false, -1), view, x, glY, w, h, overlay, false);
                 glBindVertexArray(csgVao);
@@ -483,18 +477,10 @@ public final class LiveRenderer implements AutoCloseable {
         int unboundedPrimitives = scene.unboundedPrimitives, unboundedCsg = scene.unboundedOffsets.length - unboundedPrimitives;
         glBindVertexArray(fullVao);
         glBindBuffer(GL_ARRAY_BUFFER, fullInstanceVbo);
-        for (int k = 0; k < KINDS; k++) {
-            int from = unboundedKindStart[k], count = unboundedKindStart[k + 1] - from;
-            if (count == 0) continue;
-            useGeometryProgram(geometryProgram(true, k), view, x, glY, w, h, overlay, true);
-            instanceAttributes(28L * from);
-            glDrawArraysInstanced(GL_TRIANGLES, 0, 3, count);
-        }
+        drawByKind(unboundedKindStart, 3, view, x, glY, w, h, overlay, true);
         if (unboundedCsg > 0) {
             // The CSG ones follow in the same instance buffer (no base instance in GL 3.3: the attributes start there).
             useGeometryProgram(geometryProgram(false, -1), view, x, glY, w, h, overlay, true);
-            glBindVertexArray(fullVao);
-            glBindBuffer(GL_ARRAY_BUFFER, fullInstanceVbo);
             instanceAttributes(28L * unboundedPrimitives);
             glDrawArraysInstanced(GL_TRIANGLES, 0, 3, unboundedCsg);
         }
@@ -568,6 +554,22 @@ public final class LiveRenderer implements AutoCloseable {
         glStencilMask(0xFF);
         glDisable(GL_SCISSOR_TEST);
         check("drawing");
+    }
+
+    /**
+     * One instanced draw of {@code vertices} per primitive kind with instances, each with its
+     * kind's program, from the vertex array and instance buffer bound; instances of kind k are
+     * [kindStart[k], kindStart[k + 1]).
+     */
+    private void drawByKind(int[] kindStart, int vertices, ViewCamera view, int x, int y, int w, int h, Overlay overlay,
+            boolean fullScreen) {
+        for (int k = 0; k < KINDS; k++) {
+            int from = kindStart[k], count = kindStart[k + 1] - from;
+            if (count == 0) continue;
+            useGeometryProgram(geometryProgram(true, k), view, x, y, w, h, overlay, fullScreen);
+            instanceAttributes(28L * from);
+            glDrawArraysInstanced(GL_TRIANGLES, 0, vertices, count);
+        }
     }
 
     private void useGeometryProgram(int p, ViewCamera view, int x, int y, int w, int h, Overlay overlay, boolean fullScreen) {
