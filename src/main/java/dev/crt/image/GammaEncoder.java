@@ -16,8 +16,22 @@ final class GammaEncoder {
         for (int k = 1; k < 256; k++) steps[k] = Math.pow((k - 0.5) / 255, gamma);
     }
 
-    /** Whether gamma is 1: the byte is then round(clamp(c, 0, 1)·255), with no search. */
-    boolean linear() { return gamma == 1; }
+    /**
+     * The bytes of {@code values[from … from + out.length)} into {@code out}. At gamma 1 (the
+     * default) the byte is {@link ImageFiles#toByte}'s round(clamp(c, 0, 1)·255), written out: a
+     * picture is encoded once, mostly before the JIT has compiled this loop, where a call and a
+     * search per channel cost a tenth of a second for 1280 × 720 in a fresh process.
+     */
+    void encode(float[] values, int from, byte[] out) {
+        if (gamma == 1) {
+            for (int i = 0; i < out.length; i++) {
+                float c = values[from + i];
+                out[i] = (byte) (c > 0 ? c < 1 ? (int) Math.round(c * 255.0) : 255 : 0);
+            }
+            return;
+        }
+        for (int i = 0; i < out.length; i++) out[i] = (byte) encode(values[from + i]);
+    }
 
     int encode(double c) {
         if (!(c > 0)) return 0;
