@@ -2,12 +2,17 @@ package dev.crt.render;
 
 import dev.crt.geom.Aabb;
 import dev.crt.geom.Transform;
+import dev.crt.geom.Vec3;
 import dev.crt.scene.Csg;
 import dev.crt.scene.Entity;
+import dev.crt.scene.Material;
 import dev.crt.scene.Primitive;
+import dev.crt.scene.Sphere;
 import java.util.ArrayList;
 import java.util.Arrays;
+import java.util.IdentityHashMap;
 import java.util.List;
+import java.util.Map;
 
 /**
  * Everything a ray can hit, prepared for tracing. Each top-level entity is one item (a whole CSG
@@ -17,6 +22,10 @@ import java.util.List;
  */
 final class SceneGeometry {
     static final int LINEAR_LIMIT = 4;
+    /** {@link #what} of a bounded CSG tree. */
+    private static final int CSG = -1;
+    /** {@link #what} of an entity outside the hierarchy: unbounded (planes), or with nothing to hit. */
+    private static final int OUTSIDE = -2;
 
     final Shapes shapes = new Shapes();
     final CsgSolids csg = new CsgSolids();
@@ -33,54 +42,68 @@ final class SceneGeometry {
      */
     final int[] owner;
     private int[] owners;
+    /**
+     * Per entity of the scene, while preparing: a plain sphere's material index (≥ 0), {@link #CSG},
+     * {@link #OUTSIDE}, or −(s + 3) for any other primitive, shape s of {@link #others}.
+     */
+    private int[] what;
+    /** The primitives other than plain spheres, flattened in the first pass (to be copied in the second). */
+    private Shapes others = new Shapes().sharingMeshesWith(shapes);
 
     SceneGeometry(List<Entity> entities) {
-        // First pass, in the scene's order: every primitive flattened with its material (kept, to
-        // be copied in the second pass), and the bounds of every entity, to build the hierarchy.
-        // The stores are sized for one shape per entity up front: growing arrays of a million
-        // shapes by doubling copied them about twice over.
+        // First pass, in the scene's order: the bounds of every entity, to build the hierarchy.
+        // Plain spheres (untransformed, radius > 0: most of a large scene) are measured in chunks
+        // on every core, their materials numbered per chunk and then merged in chunk order; the
+        // other entities are flattened on this thread in the scene's order.
         int m = entities.size();
-        Shapes firstShapes = new Shapes().sharingMeshesWith(shapes);
-        firstShapes.reserve(m, 5 * m);
+        what = new int[m];
+        double[] flat = new double[6 * m];
+        int chunks = Parallel.chunks(m);
+        ChunkMaterials[] found = new ChunkMaterials[chunks];
+        Parallel.forChunks(m, chunks, (chunk, from, to) -> found[chunk] = measureSpheres(entities, from, to, flat));
+        numberMaterials(m, chunks, found);
+        List<Integer> outside = new ArrayList<>();
+        List<Integer> outsideShape = new ArrayList<>();
         CsgSolids probeCsg = new CsgSolids();
         Materials probeMaterials = new Materials();
-        // Per bounded entity, its index in the scene's list, and in firstShapes (−1 for a CSG tree).
-        int[] boundedIndex = new int[m];
-        int[] boundedShape = new int[m];
-        List<Integer> infiniteIndex = new ArrayList<>();
-        List<Integer> infiniteShape = new ArrayList<>();
-        int n = 0;
-        double[] flat = new double[6 * m];
-        for (int index = 0; index < m; index++) {
-            Entity e = entities.get(index);
-            int s = -1;
-            if (e instanceof Primitive p) {
-                s = firstShapes.add(p, p.transform(), 0);
-                if (firstShapes.kind[s] == Shapes.SPHERE) {
-                    // Never empty (radius > 0); its material is numbered as any visible primitive's.
-                    firstShapes.material[s] = materials.indexOf(p.material());
-                    // A sphere's bounds written straight in, as BvhBuilder.put writes Aabb's.
-                    if (!sphereBounds(firstShapes.data, firstShapes.offset[s], flat, n)) {
-                        infiniteIndex.add(index);
-                        infiniteShape.add(s);
-                        continue;
-                    }
-                    boundedShape[n] = s;
-                    boundedIndex[n++] = index;
-                    continue;
+        int slow = 0;
+        for (ChunkMaterials f : found) slow += f.others;
+        if (slow > 0) {
+            for (int index = 0; index < m; index++) {
+                if (what[index] != OUTSIDE) continue;
+                Entity e = entities.get(index);
+                int s = -1;
+                Aabb b;
+                if (e instanceof Primitive p) {
+                    s = others.add(p, p.transform(), 0);
+                    b = others.bounds(s);
+                } else {
+                    b = probeCsg.bounds((Csg) e, Transform.IDENTITY, others, q -> probeMaterials.indexOf(q.material()));
+                }
+                if (b.isEmpty()) continue;
+                if (s >= 0) others.material[s] = materials.indexOf(((Primitive) e).material());
+                if (b.isFinite()) {
+                    what[index] = s >= 0 ? -(s + 3) : CSG;
+                    BvhBuilder.put(b, flat, index);
+                } else {
+                    outside.add(index);
+                    outsideShape.add(s);
                 }
             }
-            Aabb b = s >= 0 ? firstShapes.bounds(s)
-                    : probeCsg.bounds((Csg) e, Transform.IDENTITY, firstShapes, q -> probeMaterials.indexOf(q.material()));
-            if (b.isEmpty()) continue;
-            if (s >= 0) firstShapes.material[s] = materials.indexOf(((Primitive) e).material());
-            if (b.isFinite()) {
-                boundedShape[n] = s;
-                boundedIndex[n] = index;
-                BvhBuilder.put(b, flat, n++);
-            } else {
-                infiniteIndex.add(index);
-                infiniteShape.add(s);
+        }
+        // The bounded entities, numbered in the scene's order; their boxes moved together.
+        int[] entity = null;
+        int n = m;
+        if (slow > 0) {
+            n = 0;
+            for (int index = 0; index < m; index++) if (what[index] != OUTSIDE) n++;
+            if (n < m) {
+                entity = new int[n];
+                for (int index = 0, k = 0; index < m; index++) {
+                    if (what[index] == OUTSIDE) continue;
+                    if (k != index) System.arraycopy(flat, 6 * index, flat, 6 * k, 6);
+                    entity[k++] = index;
+                }
             }
         }
         int[] order = new int[n];
@@ -90,51 +113,116 @@ final class SceneGeometry {
             for (int i = 0; i < n; i++) order[i] = i;
             bvh = null;
         }
-        flat = null;
-        // Second pass: the flat data, laid out in traversal order for locality. A primitive is
-        // copied from the first pass rather than flattened again, which would visit the scene's
-        // objects in a scattered order; runs of primitives are copied array by array.
-        shapes.reserve(firstShapes.count(), firstShapes.dataSize());
-        owners = new int[Math.max(16, firstShapes.count())];
+        // Second pass: the flat data, laid out in traversal order for locality. Runs of
+        // primitives are placed in chunks on every core: plain spheres written from their entity,
+        // the others copied from the first pass; a CSG tree is flattened on this thread.
+        int sphereCount = m - slow;
+        shapes.reserve(sphereCount + others.count(), 5 * sphereCount + others.dataSize());
+        owners = new int[Math.max(16, sphereCount + others.count())];
         Aabb[] out = new Aabb[1];
         items = new int[n];
-        int[] src = new int[n];
+        int[] byOrder = new int[n];
+        for (int i = 0; i < n; i++) byOrder[i] = entity == null ? order[i] : entity[order[i]];
         for (int i = 0; i < n; ) {
             int j = i;
-            while (j < n && boundedShape[order[j]] >= 0) {
-                src[j] = boundedShape[order[j]];
-                j++;
-            }
+            while (j < n && what[byOrder[j]] != CSG) j++;
             if (j > i) {
-                int from = shapes.count();
-                shapes.copyAll(firstShapes, src, i, j);
-                if (shapes.count() > owners.length) owners = Arrays.copyOf(owners, Math.max(shapes.count(), 2 * owners.length));
-                for (int k = i; k < j; k++) {
-                    items[k] = from + k - i;
-                    owners[from + k - i] = boundedIndex[order[k]];
-                }
+                placeRun(entities, byOrder, i, j);
                 i = j;
             } else {
-                int k = order[i];
-                items[i++] = place(entities.get(boundedIndex[k]), -1, boundedIndex[k], firstShapes, out);
+                int index = byOrder[i];
+                items[i++] = place(entities.get(index), -1, index, out);
             }
         }
-        unbounded = new int[infiniteIndex.size()];
+        unbounded = new int[outside.size()];
         for (int i = 0; i < unbounded.length; i++) {
-            int index = infiniteIndex.get(i);
-            unbounded[i] = place(entities.get(index), infiniteShape.get(i), index, firstShapes, out);
+            int index = outside.get(i);
+            unbounded[i] = place(entities.get(index), outsideShape.get(i), index, out);
         }
         owner = Arrays.copyOf(owners, shapes.count());
         owners = null;
+        what = null;
+        others = null;
     }
 
     /**
-     * Writes the bounds of the SPHERE at {@code o} of {@code data} as item {@code i} of a flat
+     * The distinct Material objects of a chunk's plain spheres, numbered by first appearance,
+     * and how many of its entities are left to the one-thread pass.
+     */
+    private static final class ChunkMaterials {
+        /** Scenes often give many objects a few Material objects (a palette): recent answers by identity. */
+        private static final int RECENT = 64;
+        final List<Material> list = new ArrayList<>();
+        private final Map<Material, Integer> index = new IdentityHashMap<>();
+        private final Material[] recent = new Material[RECENT];
+        private final int[] recentIndex = new int[RECENT];
+        int others;
+
+        int indexOf(Material m) {
+            int r = System.identityHashCode(m) & (RECENT - 1);
+            if (recent[r] == m) return recentIndex[r];
+            Integer k = index.get(m);
+            if (k == null) {
+                k = list.size();
+                list.add(m);
+                index.put(m, k);
+            }
+            recent[r] = m;
+            recentIndex[r] = k;
+            return k;
+        }
+    }
+
+    /**
+     * The bounds of the plain spheres among entities [from, to) into {@code flat} (at their entity
+     * index) and their chunk's material numbers into {@link #what}; the other entities are marked
+     * {@link #OUTSIDE} for the one-thread pass to look at.
+     */
+    private ChunkMaterials measureSpheres(List<Entity> entities, int from, int to, double[] flat) {
+        ChunkMaterials found = new ChunkMaterials();
+        int[] what = this.what;
+        for (int index = from; index < to; index++) {
+            if (entities.get(index) instanceof Sphere sp && sp.transform() == Transform.IDENTITY && sp.radius() > 0
+                    && sphereBounds(sp.center(), sp.radius(), flat, index)) {
+                what[index] = found.indexOf(sp.material());
+            } else {
+                what[index] = OUTSIDE;
+                found.others++;
+            }
+        }
+        return found;
+    }
+
+    /**
+     * Numbers the chunks' materials in chunk order, so in the order of their first appearance in
+     * the scene whatever the chunking, and renumbers the spheres' material numbers accordingly.
+     */
+    private void numberMaterials(int m, int chunks, ChunkMaterials[] found) {
+        int[][] global = new int[chunks][];
+        boolean same = true;
+        for (int c = 0; c < chunks; c++) {
+            List<Material> list = found[c].list;
+            global[c] = new int[list.size()];
+            for (int k = 0; k < list.size(); k++) {
+                global[c][k] = materials.indexOf(list.get(k));
+                same &= global[c][k] == k;
+            }
+        }
+        if (same) return;
+        int[] what = this.what;
+        Parallel.forChunks(m, chunks, (chunk, from, to) -> {
+            int[] g = global[chunk];
+            for (int index = from; index < to; index++) if (what[index] >= 0) what[index] = g[what[index]];
+        });
+    }
+
+    /**
+     * Writes the bounds of a sphere about {@code c} of radius {@code r} as item {@code i} of a flat
      * bounds array, with the arithmetic of {@link SphereShape#bounds} and {@link BvhBuilder#put};
      * returns false, writing nothing, when they are not finite.
      */
-    private static boolean sphereBounds(double[] data, int o, double[] flat, int i) {
-        double x = data[o], y = data[o + 1], z = data[o + 2], r = data[o + 3];
+    private static boolean sphereBounds(Vec3 c, double r, double[] flat, int i) {
+        double x = c.x(), y = c.y(), z = c.z();
         double x0 = x - r, y0 = y - r, z0 = z - r, x1 = x + r, y1 = y + r, z1 = z + r;
         if (!(Double.isFinite(x0) && Double.isFinite(y0) && Double.isFinite(z0)
                 && Double.isFinite(x1) && Double.isFinite(y1) && Double.isFinite(z1))) return false;
@@ -142,10 +230,58 @@ final class SceneGeometry {
         return true;
     }
 
+    /**
+     * Places the primitives of traversal positions [i, j) (entities {@code byOrder[i]} …) as
+     * shapes, items and owners, in chunks on every core: each chunk measures its data, then
+     * writes it from where the chunks before it end (the same layout in any chunking).
+     */
+    private void placeRun(List<Entity> entities, int[] byOrder, int i, int j) {
+        int n = j - i, first = shapes.count();
+        int chunks = Parallel.chunks(n);
+        long[] before = new long[chunks + 1];
+        int[] what = this.what, offsetFrom = others.offset;
+        int last = others.count() - 1, lastEnd = others.dataSize();
+        Parallel.forChunks(n, chunks, (chunk, a, b) -> {
+            long length = 0;
+            for (int k = i + a; k < i + b; k++) {
+                int w = what[byOrder[k]];
+                if (w >= 0) {
+                    length += SphereShape.SIZE;
+                } else {
+                    int s = -w - 3;
+                    length += (s < last ? offsetFrom[s + 1] : lastEnd) - offsetFrom[s];
+                }
+            }
+            before[chunk + 1] = length;
+        });
+        for (int c = 0; c < chunks; c++) before[c + 1] += before[c];
+        int base = shapes.dataSize();
+        if (base + before[chunks] > Integer.MAX_VALUE - 16) throw new OutOfMemoryError("scene data too large");
+        shapes.claim(n, (int) before[chunks]);
+        if (first + n > owners.length) owners = Arrays.copyOf(owners, Math.max(first + n, 2 * owners.length));
+        int[] owners = this.owners;
+        Parallel.forChunks(n, chunks, (chunk, a, b) -> {
+            int at = base + (int) before[chunk];
+            for (int k = i + a; k < i + b; k++) {
+                int index = byOrder[k], w = what[index], t = first + k - i;
+                if (w >= 0) {
+                    Sphere sp = (Sphere) entities.get(index);
+                    SphereShape.place(shapes, t, at, sp.center(), sp.radius(), w);
+                    at += SphereShape.SIZE;
+                } else {
+                    at = shapes.copyAt(others, -w - 3, t, at);
+                }
+                items[k] = t;
+                owners[t] = index;
+            }
+        });
+        if (others.meshes.length > 0) shapes.reindexMeshes(others, first, first + n);
+    }
+
     /** Flattens entity number {@code index} of the scene; the shapes it adds are recorded as its own. */
-    private int place(Entity e, int first, int index, Shapes firstShapes, Aabb[] out) {
+    private int place(Entity e, int first, int index, Aabb[] out) {
         int from = shapes.count();
-        int item = first >= 0 ? shapes.copy(firstShapes, first)
+        int item = first >= 0 ? shapes.copy(others, first)
                 : -(csg.add((Csg) e, Transform.IDENTITY, shapes, q -> materials.indexOf(q.material()), out) + 1);
         int to = shapes.count();
         if (to > owners.length) owners = Arrays.copyOf(owners, Math.max(to, 2 * owners.length));

@@ -115,63 +115,40 @@ final class Shapes {
     }
 
     /**
-     * Appends copies of shapes {@code src[from]} … {@code src[to − 1]} of {@code source}, as
-     * {@link #copy} would one by one, but array by array: each pass reads one of the source's
-     * arrays in the scattered order of {@code src}, so a million shapes cost a few sequential
-     * writes and one random read each instead of six.
+     * Appends {@code n} shapes and {@code doubles} doubles of data for the caller to write (each
+     * shape's kind, material, scale, matrix, offset and data), from several threads at once if it
+     * likes; the shapes are numbered from the former {@link #count}, the data from the former
+     * {@link #dataSize}.
      */
-    void copyAll(Shapes source, int[] src, int from, int to) {
-        int n = to - from, first = count;
-        // In chunks on every core: each chunk measures its shapes' data, then copies them from
-        // where the chunks before it end (the same layout in any chunking).
-        int chunks = Parallel.chunks(n);
-        long[] before = new long[chunks + 1];
-        int[] offsetFrom = source.offset;
-        int last = source.count - 1, lastEnd = source.dataSize;
-        Parallel.forChunks(n, chunks, (chunk, a, b) -> {
-            long length = 0;
-            for (int i = a; i < b; i++) {
-                int s = src[from + i];
-                length += (s < last ? offsetFrom[s + 1] : lastEnd) - offsetFrom[s];
-            }
-            before[chunk + 1] = length;
-        });
-        for (int c = 0; c < chunks; c++) before[c + 1] += before[c];
-        if (dataSize + before[chunks] > Integer.MAX_VALUE - 16) throw new OutOfMemoryError("scene data too large");
-        reserve(first + n, dataSize + (int) before[chunks]);
-        int base = dataSize;
-        Parallel.forChunks(n, chunks, (chunk, a, b) -> copyRange(source, src, from, first, a, b, base + (int) before[chunk]));
-        if (source.meshes.length > 0) {
-            for (int i = 0; i < n; i++) {
-                if (kind[first + i] != MESH) continue;
-                // The mesh index is the source's: the geometry itself is shared, not prepared again.
-                int at = offset[first + i] + Affine.SIZE;
-                data[at] = meshIndex(source.meshes[(int) data[at]]);
-            }
-        }
-        count = first + n;
-        dataSize = base + (int) before[chunks];
+    void claim(int n, int doubles) {
+        reserve(count + n, dataSize + doubles);
+        count += n;
+        dataSize += doubles;
     }
 
-    /** Copies shapes {@code src[from + a]} … {@code src[from + b − 1]} of {@code source} to {@code first + a} on, their data from {@code at}. */
-    private void copyRange(Shapes source, int[] src, int from, int first, int a, int b, int at) {
-        int[] kindFrom = source.kind, kindTo = kind;
-        for (int i = a; i < b; i++) kindTo[first + i] = kindFrom[src[from + i]];
-        int[] materialFrom = source.material, materialTo = material;
-        for (int i = a; i < b; i++) materialTo[first + i] = materialFrom[src[from + i]];
-        double[] scaleFrom = source.scale, scaleTo = scale;
-        for (int i = a; i < b; i++) scaleTo[first + i] = scaleFrom[src[from + i]];
-        double[] matrixFrom = source.toEntity, matrixTo = toEntity;
-        for (int i = a; i < b; i++) System.arraycopy(matrixFrom, src[from + i] * 12, matrixTo, (first + i) * 12, 12);
-        int[] offsetFrom = source.offset, offsetTo = offset;
-        double[] dataFrom = source.data, dataTo = data;
-        int last = source.count - 1;
-        for (int i = a; i < b; i++) {
-            int s = src[from + i];
-            int start = offsetFrom[s], end = s < last ? offsetFrom[s + 1] : source.dataSize;
-            offsetTo[first + i] = at;
-            System.arraycopy(dataFrom, start, dataTo, at, end - start);
-            at += end - start;
+    /**
+     * Writes a copy of shape {@code s} of {@code source} as shape {@code t}, claimed, with its data
+     * from {@code at}; returns where its data ends. A MESH shape keeps the source's mesh index
+     * until {@link #reindexMeshes}.
+     */
+    int copyAt(Shapes source, int s, int t, int at) {
+        kind[t] = source.kind[s];
+        material[t] = source.material[s];
+        scale[t] = source.scale[s];
+        System.arraycopy(source.toEntity, s * 12, toEntity, t * 12, 12);
+        offset[t] = at;
+        int start = source.offset[s], end = s + 1 < source.count ? source.offset[s + 1] : source.dataSize;
+        System.arraycopy(source.data, start, data, at, end - start);
+        return at + end - start;
+    }
+
+    /** Renumbers the meshes of the MESH shapes among [from, to), copied from {@code source} by {@link #copyAt}, as this store's. */
+    void reindexMeshes(Shapes source, int from, int to) {
+        for (int t = from; t < to; t++) {
+            if (kind[t] != MESH) continue;
+            // The geometry itself is shared, not prepared again.
+            int at = offset[t] + Affine.SIZE;
+            data[at] = meshIndex(source.meshes[(int) data[at]]);
         }
     }
 

@@ -11,7 +11,28 @@ import dev.crt.scene.Sphere;
  * placement (kind MAPPED_SPHERE). Its uv are longitude and colatitude about the local y axis.
  */
 final class SphereShape {
+    /** The doubles of a SPHERE's data: centre, radius, radius². */
+    static final int SIZE = 5;
+
     private SphereShape() {}
+
+    /**
+     * Writes shape {@code s} of {@code out}, claimed, as the untransformed sphere about {@code c}
+     * of radius {@code r} &gt; 0, its data from {@code at}: what {@link #add} writes for it.
+     */
+    static void place(Shapes out, int s, int at, Vec3 c, double r, int material) {
+        out.kind[s] = Shapes.SPHERE;
+        out.material[s] = material;
+        out.offset[s] = at;
+        double[] d = out.data;
+        d[at] = c.x();
+        d[at + 1] = c.y();
+        d[at + 2] = c.z();
+        d[at + 3] = r;
+        d[at + 4] = r * r;
+        out.scale[s] = Shapes.maxAbs(c) + r;
+        Transform.IDENTITY.copyInverse(out.toEntity, 12 * s);
+    }
 
     static void add(Shapes out, int s, Sphere sp, Transform t) {
         if (!(sp.radius() > 0)) {
