@@ -51,10 +51,14 @@ final class Shapes {
     double[] data = new double[64];
     private int dataSize;
     /**
-     * Per shape, the 3×4 world-to-entity matrix of its placement (12 doubles, row-major): solid
-     * textures are evaluated in the entity's own coordinates, before its modifiers.
+     * Per shape, where the 3×4 world-to-entity matrix of its placement starts in {@link
+     * Placements#toEntity}: solid textures are evaluated in the entity's own coordinates, before
+     * its modifiers. An untransformed shape's is 0, the identity's, so a million plain spheres
+     * hold one matrix, not a million.
      */
-    double[] toEntity = new double[16 * 12];
+    int[] placement = new int[16];
+    /** The matrices {@link #placement} points into, shared with the stores made by {@link #sharingMeshesWith}. */
+    Placements placements = new Placements();
     /** The meshes the MESH shapes use, each prepared once however many instances share it. */
     MeshGeometry[] meshes = new MeshGeometry[0];
     private Map<MeshData, MeshGeometry> prepared = new IdentityHashMap<>();
@@ -66,7 +70,7 @@ final class Shapes {
         int s = next();
         material[s] = materialIndex;
         offset[s] = dataSize;
-        toWorld.copyInverse(toEntity, s * 12);
+        placement[s] = placements.add(toWorld);
         if (p instanceof Sphere sp) SphereShape.add(this, s, sp, toWorld);
         else if (p instanceof Box b) BoxShape.add(this, s, b, toWorld);
         else if (p instanceof Plane pl) PlaneShape.add(this, s, pl, toWorld);
@@ -84,7 +88,7 @@ final class Shapes {
         kind[t] = from.kind[s];
         material[t] = from.material[s];
         scale[t] = from.scale[s];
-        System.arraycopy(from.toEntity, s * 12, toEntity, t * 12, 12);
+        placement[t] = placements.of(from, s);
         offset[t] = dataSize;
         int start = from.offset[s], end = s + 1 < from.count ? from.offset[s + 1] : from.dataSize;
         int length = end - start;
@@ -109,7 +113,7 @@ final class Shapes {
             offset = Arrays.copyOf(offset, shapes);
             material = Arrays.copyOf(material, shapes);
             scale = Arrays.copyOf(scale, shapes);
-            toEntity = Arrays.copyOf(toEntity, shapes * 12);
+            placement = Arrays.copyOf(placement, shapes);
         }
         if (doubles > data.length) data = Arrays.copyOf(data, doubles);
     }
@@ -127,15 +131,15 @@ final class Shapes {
     }
 
     /**
-     * Writes a copy of shape {@code s} of {@code source} as shape {@code t}, claimed, with its data
-     * from {@code at}; returns where its data ends. A MESH shape keeps the source's mesh index
-     * until {@link #reindexMeshes}.
+     * Writes a copy of shape {@code s} of {@code source}, a store sharing this one's placements,
+     * as shape {@code t}, claimed, with its data from {@code at}; returns where its data ends. A
+     * MESH shape keeps the source's mesh index until {@link #reindexMeshes}.
      */
     int copyAt(Shapes source, int s, int t, int at) {
         kind[t] = source.kind[s];
         material[t] = source.material[s];
         scale[t] = source.scale[s];
-        System.arraycopy(source.toEntity, s * 12, toEntity, t * 12, 12);
+        placement[t] = source.placement[s];
         offset[t] = at;
         int start = source.offset[s], end = s + 1 < source.count ? source.offset[s + 1] : source.dataSize;
         System.arraycopy(source.data, start, data, at, end - start);
@@ -160,15 +164,49 @@ final class Shapes {
             offset = Arrays.copyOf(offset, n);
             material = Arrays.copyOf(material, n);
             scale = Arrays.copyOf(scale, n);
-            toEntity = Arrays.copyOf(toEntity, n * 12);
+            placement = Arrays.copyOf(placement, n);
         }
         return s;
     }
 
-    /** Makes this store prepare meshes into {@code other}'s table, so that both share them; returns this. */
+    /**
+     * Makes this store prepare meshes into {@code other}'s table and keep its placements' matrices
+     * in {@code other}'s, so that both share them; returns this.
+     */
     Shapes sharingMeshesWith(Shapes other) {
         prepared = other.prepared;
+        placements = other.placements;
         return this;
+    }
+
+    /** The world-to-entity matrices of the shapes' placements, 12 doubles each, the identity's first. */
+    static final class Placements {
+        /** The matrices, row-major; {@link Shapes#placement} gives where each shape's starts. */
+        double[] toEntity = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0};
+        private int size = 12;
+
+        /** Where the inverse matrix of {@code toWorld} starts, added unless it is the identity. */
+        int add(Transform toWorld) {
+            if (toWorld == Transform.IDENTITY) return 0;
+            int at = room();
+            toWorld.copyInverse(toEntity, at);
+            return at;
+        }
+
+        /** Where the matrix of shape {@code s} of {@code from} starts here, added unless the stores share their placements. */
+        int of(Shapes from, int s) {
+            int at = from.placement[s];
+            if (from.placements == this || at == 0) return at;
+            int to = room();
+            System.arraycopy(from.placements.toEntity, at, toEntity, to, 12);
+            return to;
+        }
+
+        private int room() {
+            if (size + 12 > toEntity.length) toEntity = Arrays.copyOf(toEntity, 2 * toEntity.length);
+            size += 12;
+            return size - 12;
+        }
     }
 
     /** The prepared geometry of {@code data}, made on first use. */

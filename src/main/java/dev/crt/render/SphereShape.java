@@ -31,7 +31,7 @@ final class SphereShape {
         d[at + 3] = r;
         d[at + 4] = r * r;
         out.scale[s] = Shapes.maxAbs(c) + r;
-        Transform.IDENTITY.copyInverse(out.toEntity, 12 * s);
+        out.placement[s] = 0;
     }
 
     static void add(Shapes out, int s, Sphere sp, Transform t) {

@@ -85,8 +85,8 @@ final class TextureShading {
 
     /** The entity point and normal of world point q and outward normal g on shape s, and the footprint in entity units. */
     private void locate(int s, double qx, double qy, double qz, double gx, double gy, double gz, double width) {
-        double[] e = shapes.toEntity;
-        int t = s * 12;
+        double[] e = shapes.placements.toEntity;
+        int t = shapes.placement[s];
         TexturePoint p = point;
         p.x = e[t] * qx + e[t + 1] * qy + e[t + 2] * qz + e[t + 3];
         p.y = e[t + 4] * qx + e[t + 5] * qy + e[t + 6] * qz + e[t + 7];
@@ -174,8 +174,8 @@ final class TextureShading {
 
     /** The bump texture's luminance a distance eps along the world direction w from the saved point. */
     private double probe(int s, int k, SurfacePoint surface, double wx, double wy, double wz, double eps) {
-        double[] e = shapes.toEntity;
-        int t = s * 12;
+        double[] e = shapes.placements.toEntity;
+        int t = shapes.placement[s];
         TexturePoint p = point;
         p.x = baseX + eps * (e[t] * wx + e[t + 1] * wy + e[t + 2] * wz);
         p.y = baseY + eps * (e[t + 4] * wx + e[t + 5] * wy + e[t + 6] * wz);

@@ -22,9 +22,9 @@ import org.junit.jupiter.api.Test;
 
 /**
  * The passes of a scene's preparation that run on several cores (the BVH's renumbering and boxes,
- * a mesh's triangle boxes, degenerate-triangle count and reordering, the scene's shapes placed in
- * traversal order) give the same result to the
- * bit for one thread and several, on inputs below and above {@link Parallel#MIN_CHUNK}.
+ * a mesh's triangle boxes, degenerate-triangle count and reordering, the plain spheres' bounds and
+ * materials, the scene's shapes placed in traversal order) give the same result to the bit for one
+ * thread and several, on inputs below and above {@link Parallel#MIN_CHUNK}.
  */
 class ParallelPreparationTest {
     @Test
@@ -117,8 +117,8 @@ class ParallelPreparationTest {
 
     @Test
     void sameSceneGeometryForOneThreadAndSeveral() {
-        // Spheres in runs long enough to be copied in chunks, broken by boxes, transformed
-        // spheres, a mesh instance, CSG trees and planes, with a palette of materials.
+        // Spheres in runs long enough to be placed in chunks, broken by boxes, transformed
+        // spheres, mesh instances, CSG trees and planes, with a palette of materials.
         SplittableRandom r = new SplittableRandom(7);
         Material[] paints = {Scenes.matte(Scenes.rgb(1, 0, 0)), Scenes.matte(Scenes.rgb(0, 1, 0)), Scenes.matte(Scenes.rgb(0, 0, 1))};
         MeshData mesh = strip(500, false, 3);
@@ -134,25 +134,101 @@ class ParallelPreparationTest {
             else entities.add(Scenes.sphere(c, 0.03, m));
         }
         SceneGeometry one = withThreads(1, () -> new SceneGeometry(entities));
-        SceneGeometry several = withThreads(2, () -> new SceneGeometry(entities));
-        assertThat(several.items).isEqualTo(one.items);
-        assertThat(several.unbounded).isEqualTo(one.unbounded);
-        assertThat(several.owner).isEqualTo(one.owner);
-        assertThat(several.bvh.children).isEqualTo(one.bvh.children);
-        assertThat(several.bvh.box).isEqualTo(one.bvh.box);
-        Shapes a = one.shapes, b = several.shapes;
-        assertThat(b.count()).isEqualTo(a.count());
-        assertThat(b.dataSize()).isEqualTo(a.dataSize());
-        assertThat(Arrays.copyOf(b.kind, b.count())).isEqualTo(Arrays.copyOf(a.kind, a.count()));
-        assertThat(Arrays.copyOf(b.offset, b.count())).isEqualTo(Arrays.copyOf(a.offset, a.count()));
-        assertThat(Arrays.copyOf(b.material, b.count())).isEqualTo(Arrays.copyOf(a.material, a.count()));
-        assertThat(Arrays.copyOf(b.scale, b.count())).isEqualTo(Arrays.copyOf(a.scale, a.count()));
-        assertThat(Arrays.copyOf(b.toEntity, 12 * b.count())).isEqualTo(Arrays.copyOf(a.toEntity, 12 * a.count()));
-        assertThat(Arrays.copyOf(b.data, b.dataSize())).isEqualTo(Arrays.copyOf(a.data, a.dataSize()));
-        assertThat(b.meshes).hasSize(1).hasSameSizeAs(a.meshes);
-        assertThat(several.materials.data).isEqualTo(one.materials.data);
+        for (int threads : new int[] {2, 3}) {
+            SceneGeometry several = withThreads(threads, () -> new SceneGeometry(entities));
+            assertSameGeometry(several, one, threads + " threads");
+            assertThat(several.shapes.meshes).hasSize(1);
+        }
         // Every entity but the planes' is in the hierarchy, each of its shapes owned by it.
         assertThat(one.items.length + one.unbounded.length).isEqualTo(entities.size());
+        assertThat(one.bvh).isNotNull();
+    }
+
+    @Test
+    void sameSceneGeometryForOneThreadAndSeveralOnTinyAndOddScenes() {
+        Material red = Scenes.matte(Scenes.rgb(1, 0, 0)), blue = Scenes.matte(Scenes.rgb(0, 0, 1));
+        Entity plain = Scenes.sphere(Scenes.v(1, 2, 3), 0.5, red);
+        Entity far = Scenes.sphere(Scenes.v(1e308, 0, 0), 1e308, blue);
+        Entity flat = Scenes.sphere(Scenes.v(0, 0, 0), 0, red);
+        Entity plane = Scenes.plane(Scenes.v(0, 1, 0), Scenes.v(0, -1, 0), blue);
+        Entity cut = Scenes.csg(CsgOperation.DIFFERENCE, Scenes.sphere(Scenes.v(0, 0, 0), 1, red), Scenes.box(Scenes.v(0, 0, 0), Scenes.v(2, 2, 2), blue));
+        List<List<Entity>> scenes = List.of(List.of(), List.of(plain), List.of(plane), List.of(cut), List.of(far, flat),
+                List.of(plain, far, flat, plane, cut, plain, plain, plain, plain, cut),
+                List.of(plain, plain, plain, plain, plain, plain));
+        for (List<Entity> entities : scenes) {
+            SceneGeometry one = withThreads(1, () -> new SceneGeometry(entities));
+            for (int threads : new int[] {2, 3}) {
+                SceneGeometry several = withThreads(threads, () -> new SceneGeometry(entities));
+                assertSameGeometry(several, one, entities.size() + " entities, " + threads + " threads");
+            }
+        }
+        SceneGeometry odd = new SceneGeometry(scenes.get(4));
+        assertThat(odd.items).isEmpty();
+        assertThat(odd.unbounded).as("a sphere of infinite bounds is tested by every ray; one of radius 0 nowhere").hasSize(1);
+    }
+
+    @Test
+    void plainSpheresArePlacedAsTheGeneralPathPlacesThem() {
+        // The same spheres, once untransformed (measured in chunks, written from the entity) and
+        // once under a transform equal to the identity but not it (flattened by Shapes.add and
+        // copied): the same shapes, materials and tree, only the matrices' places differ.
+        SplittableRandom r = new SplittableRandom(11);
+        Material[] paints = {Scenes.matte(Scenes.rgb(1, 0, 0)), Scenes.matte(Scenes.rgb(0, 1, 0)), Scenes.matte(Scenes.rgb(0, 0, 1))};
+        Transform same = Transform.translation(Scenes.v(0, 0, 0));
+        List<Entity> plain = new ArrayList<>(), general = new ArrayList<>();
+        for (int i = 0; i < 2 * Parallel.MIN_CHUNK + 5; i++) {
+            Vec3 c = Scenes.v(r.nextDouble(-10, 10), r.nextDouble(-10, 10), r.nextDouble(-10, 10));
+            double radius = r.nextDouble(0.01, 0.1);
+            plain.add(Scenes.sphere(c, radius, paints[i % 3]));
+            general.add(new Sphere(c, radius, paints[i % 3], same, SourceSpan.NONE));
+        }
+        for (int threads : new int[] {1, 2}) {
+            SceneGeometry a = withThreads(threads, () -> new SceneGeometry(plain));
+            SceneGeometry b = withThreads(threads, () -> new SceneGeometry(general));
+            String what = threads + " threads";
+            assertThat(a.items).as(what).isEqualTo(b.items);
+            assertThat(a.owner).as(what).isEqualTo(b.owner);
+            assertThat(a.bvh.children).as(what).isEqualTo(b.bvh.children);
+            assertThat(a.bvh.box).as(what).isEqualTo(b.bvh.box);
+            assertSameShapes(a.shapes, b.shapes, what);
+            assertThat(a.materials.data).as(what).isEqualTo(b.materials.data);
+            assertThat(a.shapes.placement[0]).as("the identity's place").isZero();
+        }
+    }
+
+    private static void assertSameGeometry(SceneGeometry several, SceneGeometry one, String what) {
+        assertThat(several.items).as(what).isEqualTo(one.items);
+        assertThat(several.unbounded).as(what).isEqualTo(one.unbounded);
+        assertThat(several.owner).as(what).isEqualTo(one.owner);
+        if (one.bvh == null) {
+            assertThat(several.bvh).as(what).isNull();
+        } else {
+            assertThat(several.bvh.children).as(what).isEqualTo(one.bvh.children);
+            assertThat(several.bvh.box).as(what).isEqualTo(one.bvh.box);
+        }
+        assertSameShapes(several.shapes, one.shapes, what);
+        assertThat(Arrays.copyOf(several.shapes.placement, one.shapes.count())).as(what)
+                .isEqualTo(Arrays.copyOf(one.shapes.placement, one.shapes.count()));
+        assertThat(several.shapes.meshes).as(what).hasSameSizeAs(one.shapes.meshes);
+        assertThat(several.materials.data).as(what).isEqualTo(one.materials.data);
+    }
+
+    /** The same shapes: kinds, offsets, materials, scales, data, and the matrices of their placements by value (−0 = 0). */
+    private static void assertSameShapes(Shapes b, Shapes a, String what) {
+        assertThat(b.count()).as(what).isEqualTo(a.count());
+        assertThat(b.dataSize()).as(what).isEqualTo(a.dataSize());
+        assertThat(Arrays.copyOf(b.kind, b.count())).as(what).isEqualTo(Arrays.copyOf(a.kind, a.count()));
+        assertThat(Arrays.copyOf(b.offset, b.count())).as(what).isEqualTo(Arrays.copyOf(a.offset, a.count()));
+        assertThat(Arrays.copyOf(b.material, b.count())).as(what).isEqualTo(Arrays.copyOf(a.material, a.count()));
+        assertThat(Arrays.copyOf(b.scale, b.count())).as(what).isEqualTo(Arrays.copyOf(a.scale, a.count()));
+        assertThat(Arrays.copyOf(b.data, b.dataSize())).as(what).isEqualTo(Arrays.copyOf(a.data, a.dataSize()));
+        for (int s = 0; s < a.count(); s++) {
+            for (int k = 0; k < 12; k++) {
+                // == rather than equals: the general path's matrix of a translation by zero has −0 where the identity has 0.
+                double x = b.placements.toEntity[b.placement[s] + k], y = a.placements.toEntity[a.placement[s] + k];
+                assertThat(x == y).as("%s, shape %d, matrix entry %d: %s against %s", what, s, k, x, y).isTrue();
+            }
+        }
     }
 
     /** A random triangle strip of {@code n} triangles; with {@code degenerate}, every 97th has a repeated vertex. */
