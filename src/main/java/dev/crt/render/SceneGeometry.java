@@ -58,9 +58,13 @@ final class SceneGeometry {
         int m = entities.size();
         what = new int[m];
         double[] flat = new double[6 * m];
+        // The plain spheres' data as the second pass writes it, in the scene's order: read there
+        // in the tree's scattered order, one place per sphere instead of the list, the sphere
+        // and its centre one after the other.
+        double[] sphereData = new double[SphereShape.SIZE * m];
         int chunks = Parallel.chunks(m);
         ChunkMaterials[] found = new ChunkMaterials[chunks];
-        Parallel.forChunks(m, chunks, (chunk, from, to) -> found[chunk] = measureSpheres(entities, from, to, flat));
+        Parallel.forChunks(m, chunks, (chunk, from, to) -> found[chunk] = measureSpheres(entities, from, to, flat, sphereData));
         numberMaterials(m, chunks, found);
         List<Integer> outside = new ArrayList<>();
         List<Integer> outsideShape = new ArrayList<>();
@@ -127,7 +131,7 @@ final class SceneGeometry {
             int j = i;
             while (j < n && what[byOrder[j]] != CSG) j++;
             if (j > i) {
-                placeRun(entities, byOrder, i, j);
+                placeRun(sphereData, byOrder, i, j);
                 i = j;
             } else {
                 int index = byOrder[i];
@@ -139,7 +143,7 @@ final class SceneGeometry {
             int index = outside.get(i);
             unbounded[i] = place(entities.get(index), outsideShape.get(i), index, out);
         }
-        owner = Arrays.copyOf(owners, shapes.count());
+        owner = owners.length == shapes.count() ? owners : Arrays.copyOf(owners, shapes.count());
         owners = null;
         what = null;
         others = null;
@@ -174,16 +178,18 @@ final class SceneGeometry {
     }
 
     /**
-     * The bounds of the plain spheres among entities [from, to) into {@code flat} (at their entity
-     * index) and their chunk's material numbers into {@link #what}; the other entities are marked
-     * {@link #OUTSIDE} for the one-thread pass to look at.
+     * The bounds of the plain spheres among entities [from, to) into {@code flat} and their data
+     * into {@code sphereData} (at their entity index), and their chunk's material numbers into
+     * {@link #what}; the other entities are marked {@link #OUTSIDE} for the one-thread pass to
+     * look at.
      */
-    private ChunkMaterials measureSpheres(List<Entity> entities, int from, int to, double[] flat) {
+    private ChunkMaterials measureSpheres(List<Entity> entities, int from, int to, double[] flat, double[] sphereData) {
         ChunkMaterials found = new ChunkMaterials();
         int[] what = this.what;
         for (int index = from; index < to; index++) {
             if (entities.get(index) instanceof Sphere sp && sp.transform() == Transform.IDENTITY && sp.radius() > 0
                     && sphereBounds(sp.center(), sp.radius(), flat, index)) {
+                SphereShape.write(sphereData, SphereShape.SIZE * index, sp.center(), sp.radius());
                 what[index] = found.indexOf(sp.material());
             } else {
                 what[index] = OUTSIDE;
@@ -233,9 +239,10 @@ final class SceneGeometry {
     /**
      * Places the primitives of traversal positions [i, j) (entities {@code byOrder[i]} …) as
      * shapes, items and owners, in chunks on every core: each chunk measures its data, then
-     * writes it from where the chunks before it end (the same layout in any chunking).
+     * writes it from where the chunks before it end (the same layout in any chunking). Plain
+     * spheres are copied from their data in {@code sphereData}, the others from the first pass.
      */
-    private void placeRun(List<Entity> entities, int[] byOrder, int i, int j) {
+    private void placeRun(double[] sphereData, int[] byOrder, int i, int j) {
         int n = j - i, first = shapes.count();
         int chunks = Parallel.chunks(n);
         long[] before = new long[chunks + 1];
@@ -265,8 +272,7 @@ final class SceneGeometry {
             for (int k = i + a; k < i + b; k++) {
                 int index = byOrder[k], w = what[index], t = first + k - i;
                 if (w >= 0) {
-                    Sphere sp = (Sphere) entities.get(index);
-                    SphereShape.place(shapes, t, at, sp.center(), sp.radius(), w);
+                    SphereShape.place(shapes, t, at, sphereData, SphereShape.SIZE * index, w);
                     at += SphereShape.SIZE;
                 } else {
                     at = shapes.copyAt(others, -w - 3, t, at);

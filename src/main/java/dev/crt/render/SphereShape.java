@@ -16,22 +16,34 @@ final class SphereShape {
 
     private SphereShape() {}
 
+    /** Writes the data of an untransformed sphere about {@code c} of radius {@code r} &gt; 0 at {@code at}, as {@link #add} pushes it. */
+    static void write(double[] data, int at, Vec3 c, double r) {
+        data[at] = c.x();
+        data[at + 1] = c.y();
+        data[at + 2] = c.z();
+        data[at + 3] = r;
+        data[at + 4] = r * r;
+    }
+
     /**
-     * Writes shape {@code s} of {@code out}, claimed, as the untransformed sphere about {@code c}
-     * of radius {@code r} &gt; 0, its data from {@code at}: what {@link #add} writes for it.
+     * Writes shape {@code s} of {@code out}, claimed, as the untransformed sphere whose data
+     * {@link #write} wrote at {@code from} of {@code source}, with its data from {@code at}: what
+     * {@link #add} makes of it.
      */
-    static void place(Shapes out, int s, int at, Vec3 c, double r, int material) {
+    static void place(Shapes out, int s, int at, double[] source, int from, int material) {
+        double x = source[from], y = source[from + 1], z = source[from + 2], r = source[from + 3];
         out.kind[s] = Shapes.SPHERE;
         out.material[s] = material;
         out.offset[s] = at;
-        double[] d = out.data;
-        d[at] = c.x();
-        d[at + 1] = c.y();
-        d[at + 2] = c.z();
-        d[at + 3] = r;
-        d[at + 4] = r * r;
-        out.scale[s] = Shapes.maxAbs(c) + r;
         out.placement[s] = 0;
+        double[] d = out.data;
+        d[at] = x;
+        d[at + 1] = y;
+        d[at + 2] = z;
+        d[at + 3] = r;
+        d[at + 4] = source[from + 4];
+        // Shapes.maxAbs(centre) + r
+        out.scale[s] = Math.max(Math.abs(x), Math.max(Math.abs(y), Math.abs(z))) + r;
     }
 
     static void add(Shapes out, int s, Sphere sp, Transform t) {
