@@ -125,8 +125,8 @@ final class SceneGeometry {
         owners = new int[Math.max(16, sphereCount + others.count())];
         Aabb[] out = new Aabb[1];
         items = new int[n];
-        int[] byOrder = new int[n];
-        for (int i = 0; i < n; i++) byOrder[i] = entity == null ? order[i] : entity[order[i]];
+        int[] byOrder = order;
+        if (entity != null) for (int i = 0; i < n; i++) byOrder[i] = entity[order[i]];
         for (int i = 0; i < n; ) {
             int j = i;
             while (j < n && what[byOrder[j]] != CSG) j++;
