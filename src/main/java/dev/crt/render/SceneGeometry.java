@@ -118,13 +118,14 @@ final class SceneGeometry {
             bvh = null;
         }
         // Second pass: the flat data, laid out in traversal order for locality. Runs of
-        // primitives are placed in chunks on every core: plain spheres written from their entity,
+        // primitives are placed in chunks on every core: plain spheres written from their data,
         // the others copied from the first pass; a CSG tree is flattened on this thread.
         int sphereCount = m - slow;
-        shapes.reserve(sphereCount + others.count(), 5 * sphereCount + others.dataSize());
+        shapes.reserve(sphereCount + others.count(), SphereShape.SIZE * sphereCount + others.dataSize());
         owners = new int[Math.max(16, sphereCount + others.count())];
         Aabb[] out = new Aabb[1];
         items = new int[n];
+        // The entity at each traversal position, written over its number among the bounded ones.
         int[] byOrder = order;
         if (entity != null) for (int i = 0; i < n; i++) byOrder[i] = entity[order[i]];
         for (int i = 0; i < n; ) {
