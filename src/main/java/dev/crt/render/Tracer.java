@@ -50,7 +50,7 @@ final class Tracer {
     /** Set by the pixel sampler: the next ray traced is a camera ray of the current block of {@link #candidates}. */
     boolean blockRay;
     /** The shape whose surface is being shaded (its shadow rays may take its list), or {@link #NONE}. */
-    private int shading = NONE;
+    int shading = NONE;
     /** The item that made the last {@link #blocked} true. */
     int blocker = NONE;
 
