@@ -27,6 +27,18 @@ final class Candidates {
     static final int SHADOW_AFTER = 4;
     /** Relative widening of every region test, far above the rounding of rays, hits and the tests themselves. */
     private static final double WIDEN = 1e-9;
+    /** A pair on trial is −(items tested by its walks << TRIAL_BITS | walks). */
+    private static final int TRIAL_BITS = 3, TRIAL_MASK = (1 << TRIAL_BITS) - 1;
+    /** The (shape, light) pair whose shadow ray is walking on trial, or −1. */
+    private int trialKey = -1;
+    /** The weight of a CSG tree or a mesh against a plain shape's test, in {@link #weight}. */
+    static final int HEAVY = 8;
+    /**
+     * What a shadow ray's walk costs besides its item tests, in plain shapes' tests: 2·log₂(items),
+     * a rough figure (a shadow walk of the 10,000 spheres takes about 25 steps, each at least as dear
+     * as a sphere's test); a list that costs more keeps the walk (docs/benchmarks.md, section 25).
+     */
+    private final double stepCost;
     /** A state of a (shape, light) pair: no list, always the walk. */
     private static final int WALK = Integer.MAX_VALUE;
 
@@ -50,9 +62,9 @@ final class Candidates {
     private final double[] plane = new double[5 * 4];
     private double cx, cy, cz;
 
-    /** Per shape × light: 0 unseen, −k walked k times, {@link #WALK}, or 1 + the list's index in {@link #pool}. */
+    /** Per shape × light: 0 unseen, negative on trial (see {@link #TRIAL_BITS}), {@link #WALK}, or 1 + the list's index in {@link #pool}. */
     private int[] state;
-    /** The lists, each: its length, then its items in depth-first leaf order. */
+    /** The lists, each: its length, its region's number, then its items in depth-first leaf order. */
     int[] pool = new int[1024];
     private int poolSize;
     /** Per list (its number at pool[list + 1]), the box its shadow rays' origins must lie in: min x, y, z, max x, y, z. */
@@ -71,6 +83,7 @@ final class Candidates {
         double size = 0;
         for (double v : bvh.root) size = Math.max(size, Math.abs(v));
         sceneSize = size;
+        stepCost = 2 * Math.log(Math.max(2, items.length)) / Math.log(2);
     }
 
     /**
@@ -177,14 +190,16 @@ final class Candidates {
         int[] st = state;
         if (st == null) st = state = new int[shapes.count() * lights.count];
         int key = shape * lights.count + light;
+        trialKey = -1;
         int s = st[key];
         if (s == WALK) return -1;
         if (s <= 0) {
-            if (s > -SHADOW_AFTER) {
-                st[key] = s - 1;
+            int walks = -s & TRIAL_MASK;
+            if (walks < SHADOW_AFTER) {
+                trialKey = key;
                 return -1;
             }
-            s = st[key] = buildShadow(shape, light);
+            s = st[key] = buildShadow(shape, light, (double) (-s >>> TRIAL_BITS) / walks);
             if (s == WALK) return -1;
         }
         int list = s - 1;
@@ -193,12 +208,27 @@ final class Candidates {
         return ox >= r[k] && oy >= r[k + 1] && oz >= r[k + 2] && ox <= r[k + 3] && oy <= r[k + 4] && oz <= r[k + 5] ? list : -1;
     }
 
-    /** The length of the list at {@code list} in {@link #pool}; its items follow at list + 2. */
-    int length(int list) {
-        return pool[list];
+    /**
+     * Records what the walk of the shadow ray the last {@link #shadow} call turned down cost: the
+     * walks it took (0 or 1) and the items they tested, while its pair is on trial.
+     */
+    void walked(int walks, int tested) {
+        if (trialKey < 0 || walks == 0) return;
+        int s = -state[trialKey];
+        int items = Math.min((s >>> TRIAL_BITS) + tested, Integer.MAX_VALUE >>> TRIAL_BITS);
+        state[trialKey] = -(items << TRIAL_BITS | (s & TRIAL_MASK) + walks);
+        trialKey = -1;
     }
 
-    private int buildShadow(int shape, int light) {
+    /**
+     * What testing an item costs, in tests of a plain shape: a CSG tree or a mesh gathers or walks
+     * its own parts. {@link Tracer}'s walk counts its CSG trees the same way.
+     */
+    private int weight(int item) {
+        return item < 0 ? HEAVY : shapes.kind[item] == Shapes.MESH ? HEAVY : 1;
+    }
+
+    private int buildShadow(int shape, int light, double walkedItems) {
         Aabb b = shapes.bounds(shape);
         if (b.isEmpty() || !b.isFinite()) return WALK;
         double x0 = b.min().x(), y0 = b.min().y(), z0 = b.min().z(), x1 = b.max().x(), y1 = b.max().y(), z1 = b.max().z();
@@ -221,6 +251,9 @@ final class Candidates {
         if (regions.length < 6 * (regionCount + 1)) regions = Arrays.copyOf(regions, 2 * regions.length);
         int n = collectInto(false, pool, at + 2, SHADOW_LIMIT, null);
         if (n < 0) return WALK;
+        double cost = 0;
+        for (int k = at + 2; k < at + 2 + n; k++) cost += weight(pool[k]);
+        if (cost > walkedItems + stepCost) return WALK;
         pool[at] = n;
         pool[at + 1] = regionCount;
         System.arraycopy(h, 0, regions, 6 * regionCount++, 6);

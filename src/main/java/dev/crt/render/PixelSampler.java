@@ -82,6 +82,11 @@ final class PixelSampler {
         blocks = tracer.candidates != null && camera.pinhole() && original == null;
     }
 
+    /** Whether camera rays take their block's list of candidates: pixels are best visited block by block. */
+    boolean blocks() {
+        return blocks;
+    }
+
     /** Writes the linear colour of pixel (i, j) into {@code out[0..2]}; a stopped pixel's colour is partial and unused. */
     void pixel(int i, int j, double[] out) {
         Tracer t = tracer;

@@ -108,6 +108,7 @@ public final class Renderer {
                     ? new OriginalShading(tracer, geometry, lights, background) : null;
             PixelSampler sampler = new PixelSampler(tracer, original, camera, settings, pilotVariance,
                     () -> cancelled.get() || monitor.isCancelled());
+            int block = sampler.blocks() ? Candidates.BLOCK : TILE;
             Runnable work = () -> {
                 double[] rgb = new double[3];
                 float[] pilot = new float[3];
@@ -121,11 +122,13 @@ public final class Renderer {
                     int x1 = Math.min(x0 + TILE, width), y1 = Math.min(y0 + TILE, height);
                     // Checked at every pixel (and inside it, by the sampler): a pixel of thousands of
                     // samples is the longest a cancel waits, not a row of a tile.
-                    // Block by block, so the camera rays of a block share its list of candidates.
-                    for (int by = y0; by < y1; by += Candidates.BLOCK) {
-                        for (int bx = x0; bx < x1; bx += Candidates.BLOCK) {
-                            for (int y = by, ye = Math.min(by + Candidates.BLOCK, y1); y < ye; y++) {
-                                for (int x = bx, xe = Math.min(bx + Candidates.BLOCK, x1); x < xe; x++) {
+                    // Block by block when camera rays share their block's list of candidates, else
+                    // row by row as before (drops.crt, whose lens rays take no list, measured slower
+                    // block by block).
+                    for (int by = y0; by < y1; by += block) {
+                        for (int bx = x0; bx < x1; bx += block) {
+                            for (int y = by, ye = Math.min(by + block, y1); y < ye; y++) {
+                                for (int x = bx, xe = Math.min(bx + block, x1); x < xe; x++) {
                                     if (cancelled.get() || monitor.isCancelled()) {
                                         cancelled.set(true);
                                         return;

@@ -51,6 +51,8 @@ final class Tracer {
     boolean blockRay;
     /** The shape whose surface is being shaded (its shadow rays may take its list), or {@link #NONE}. */
     int shading = NONE;
+    /** Shadow rays that walked the BVH, and the items they tested: what a shadow list is weighed against. */
+    private int walks, tested;
     /** The item that made the last {@link #blocked} true. */
     int blocker = NONE;
 
@@ -369,7 +371,9 @@ final class Tracer {
                 && lights.kind[light] != Lights.PARALLEL) {
             list = candidates.shadow(shading, light, ox, oy, oz);
         }
+        int walks = this.walks, tested = this.tested;
         double s = reach > margin ? transmittance(ox, oy, oz, sx / reach, sy / reach, sz / reach, reach - margin, light, list) : 1;
+        if (list < 0 && shading != NONE && candidates != null) candidates.walked(this.walks - walks, this.tested - tested);
         if (Features.ABSORPTION && absorbing) absorbed();
         return s;
     }
@@ -539,9 +543,11 @@ final class Tracer {
             return product;
         }
         BvhWalker walk = walker;
+        walks++;
         if (!walk.start(bvh, ray, 0, tMax)) return product;
         for (int leaf = walk.nextAny(tMax); leaf != BvhWalker.END; leaf = walk.nextAny(tMax)) {
             for (int k = Bvh.leafFirst(leaf), end = k + Bvh.leafCount(leaf); k < end; k++) {
+                tested += items[k] < 0 ? Candidates.HEAVY : 1;
                 product *= itemTransmittance(items[k], tMax);
                 if (product == 0) return blockedBy(light, items[k]);
             }
