@@ -172,8 +172,9 @@ class CandidatesTest {
             }
         }
         System.out.printf("shadow lists: %d rays, %d listed, %d partly lit%n", rays, listed, partial);
-        // The lists were taken for most rays, and many of those crossed transparent casters.
-        assertThat(listed).isGreaterThan(rays / 2);
+        // The lists were taken for many rays (the others' pairs weigh more listed than walked), and
+        // many of those crossed transparent casters.
+        assertThat(listed).isGreaterThan(rays / 10);
         assertThat(partial).isGreaterThan(listed / 20);
     }
 }
