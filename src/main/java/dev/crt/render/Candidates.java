@@ -27,18 +27,12 @@ final class Candidates {
     static final int SHADOW_AFTER = 4;
     /** Relative widening of every region test, far above the rounding of rays, hits and the tests themselves. */
     private static final double WIDEN = 1e-9;
-    /** A pair on trial is −(items tested by its walks << TRIAL_BITS | walks). */
+    /** A pair on trial is −(cost of its walks << TRIAL_BITS | walks), the cost as {@link #walked} is told it. */
     private static final int TRIAL_BITS = 3, TRIAL_MASK = (1 << TRIAL_BITS) - 1;
     /** The (shape, light) pair whose shadow ray is walking on trial, or −1. */
     private int trialKey = -1;
     /** The weight of a CSG tree or a mesh against a plain shape's test, in {@link #weight}. */
     static final int HEAVY = 8;
-    /**
-     * What a shadow ray's walk costs besides its item tests, in plain shapes' tests: 2·log₂(items),
-     * a rough figure (a shadow walk of the 10,000 spheres takes about 25 steps, each at least as dear
-     * as a sphere's test); a list that costs more keeps the walk (docs/benchmarks.md, section 25).
-     */
-    private final double stepCost;
     /** A state of a (shape, light) pair: no list, always the walk. */
     private static final int WALK = Integer.MAX_VALUE;
 
@@ -83,7 +77,6 @@ final class Candidates {
         double size = 0;
         for (double v : bvh.root) size = Math.max(size, Math.abs(v));
         sceneSize = size;
-        stepCost = 2 * Math.log(Math.max(2, items.length)) / Math.log(2);
     }
 
     /**
@@ -209,13 +202,14 @@ final class Candidates {
     }
 
     /**
-     * Records what the walk of the shadow ray the last {@link #shadow} call turned down cost: the
-     * walks it took (0 or 1) and the items they tested, while its pair is on trial.
+     * Records what the walk of the shadow ray the last {@link #shadow} call turned down cost, while
+     * its pair is on trial: the walks it took (0 or 1), and their nodes opened plus their items
+     * tested, weighed by {@link #weight} (a node's two box tests cost about a sphere's test).
      */
-    void walked(int walks, int tested) {
+    void walked(int walks, int cost) {
         if (trialKey < 0 || walks == 0) return;
         int s = -state[trialKey];
-        int items = Math.min((s >>> TRIAL_BITS) + tested, Integer.MAX_VALUE >>> TRIAL_BITS);
+        int items = Math.min((s >>> TRIAL_BITS) + cost, Integer.MAX_VALUE >>> TRIAL_BITS);
         state[trialKey] = -(items << TRIAL_BITS | (s & TRIAL_MASK) + walks);
         trialKey = -1;
     }
@@ -224,11 +218,16 @@ final class Candidates {
      * What testing an item costs, in tests of a plain shape: a CSG tree or a mesh gathers or walks
      * its own parts. {@link Tracer}'s walk counts its CSG trees the same way.
      */
-    private int weight(int item) {
+    int weight(int item) {
         return item < 0 ? HEAVY : shapes.kind[item] == Shapes.MESH ? HEAVY : 1;
     }
 
-    private int buildShadow(int shape, int light, double walkedItems) {
+    /**
+     * Builds the shadow list of {@code shape} towards {@code light}, or returns {@link #WALK} when it
+     * would be too long or cost more than {@code walkedCost}, what its pair's walks cost on average:
+     * each a node's pair of box tests and each item tested, weighed by {@link #weight}.
+     */
+    private int buildShadow(int shape, int light, double walkedCost) {
         Aabb b = shapes.bounds(shape);
         if (b.isEmpty() || !b.isFinite()) return WALK;
         double x0 = b.min().x(), y0 = b.min().y(), z0 = b.min().z(), x1 = b.max().x(), y1 = b.max().y(), z1 = b.max().z();
@@ -253,7 +252,7 @@ final class Candidates {
         if (n < 0) return WALK;
         double cost = 0;
         for (int k = at + 2; k < at + 2 + n; k++) cost += weight(pool[k]);
-        if (cost > walkedItems + stepCost) return WALK;
+        if (cost > walkedCost) return WALK;
         pool[at] = n;
         pool[at + 1] = regionCount;
         System.arraycopy(h, 0, regions, 6 * regionCount++, 6);

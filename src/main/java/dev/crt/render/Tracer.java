@@ -51,7 +51,7 @@ final class Tracer {
     boolean blockRay;
     /** The shape whose surface is being shaded (its shadow rays may take its list), or {@link #NONE}. */
     int shading = NONE;
-    /** Shadow rays that walked the BVH, and the items they tested: what a shadow list is weighed against. */
+    /** Shadow rays that walked the BVH, and the items they tested (weighed as {@link Candidates#weight}). */
     private int walks, tested;
     /** The item that made the last {@link #blocked} true. */
     int blocker = NONE;
@@ -371,9 +371,11 @@ final class Tracer {
                 && lights.kind[light] != Lights.PARALLEL) {
             list = candidates.shadow(shading, light, ox, oy, oz);
         }
-        int walks = this.walks, tested = this.tested;
+        int walks = this.walks, tested = this.tested + walker.anySteps;
         double s = reach > margin ? transmittance(ox, oy, oz, sx / reach, sy / reach, sz / reach, reach - margin, light, list) : 1;
-        if (list < 0 && shading != NONE && candidates != null) candidates.walked(this.walks - walks, this.tested - tested);
+        if (list < 0 && shading != NONE && candidates != null) {
+            candidates.walked(this.walks - walks, this.tested + walker.anySteps - tested);
+        }
         if (Features.ABSORPTION && absorbing) absorbed();
         return s;
     }
