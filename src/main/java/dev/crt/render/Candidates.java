@@ -20,7 +20,7 @@ final class Candidates {
     /** Side of a block of pixels sharing one list of primary candidates (fixed in image coordinates). */
     static final int BLOCK = 8;
     /** A block whose list would be longer is walked ray by ray. */
-    static final int BLOCK_LIMIT = 48;
+    static final int BLOCK_LIMIT = 128;
     /** A (shape, light) pair whose list would be longer keeps the walk. */
     static final int SHADOW_LIMIT = 48;
     /** Shadow rays a (shape, light) pair casts by the walk before its list is built: a shape lit once does not repay a list. */
