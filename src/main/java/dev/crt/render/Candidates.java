@@ -54,8 +54,13 @@ final class Candidates {
     int blockCount;
     /** The frustum's five planes (four sides and the front) through the camera: normal and the margin to allow. */
     private final double[] plane = new double[5 * 4];
+    /** The camera's position: the pyramid's apex. */
     private double cx, cy, cz;
 
+    /** More (shape, light) pairs than this keep the walk: their table would take more than 256 MB a thread. */
+    private static final long MAX_PAIRS = 1L << 26;
+    /** Whether the scene has few enough pairs for shadow lists. */
+    private final boolean shadowLists;
     /** Per shape × light: 0 unseen, negative on trial (see {@link #TRIAL_BITS}), {@link #WALK}, or 1 + the list's index in {@link #pool}. */
     private int[] state;
     /** The lists, each: its length, its region's number, then its items in depth-first leaf order. */
@@ -77,6 +82,7 @@ final class Candidates {
         double size = 0;
         for (double v : bvh.root) size = Math.max(size, Math.abs(v));
         sceneSize = size;
+        shadowLists = (long) shapes.count() * lights.count <= MAX_PAIRS;
     }
 
     /**
@@ -180,10 +186,11 @@ final class Candidates {
      * (at its position q), valid for a shadow ray from o; −1 when the ray is to walk the tree.
      */
     int shadow(int shape, int light, double ox, double oy, double oz) {
+        trialKey = -1;
+        if (!shadowLists) return -1;
         int[] st = state;
         if (st == null) st = state = new int[shapes.count() * lights.count];
         int key = shape * lights.count + light;
-        trialKey = -1;
         int s = st[key];
         if (s == WALK) return -1;
         if (s <= 0) {

@@ -116,7 +116,8 @@ class CandidatesTest {
             }
         }
         System.out.printf("block lists: %d rays listed, %d walked, %d hits, %d ties%n", listed, walked, hits, ties);
-        assertThat(ties).isLessThan(hits / 1000);
+        // All of them, when counted, between two tori meshes placed at the same point (most at exactly the same t).
+        assertThat(ties).isLessThan(hits / 200);
         assertThat(listed).isGreaterThan(10 * walked);
         assertThat(hits).isBetween(listed / 10, listed - listed / 10);
     }
@@ -176,5 +177,43 @@ class CandidatesTest {
         // many of those crossed transparent casters.
         assertThat(listed).isGreaterThan(rays / 10);
         assertThat(partial).isGreaterThan(listed / 20);
+    }
+
+    @Test
+    void listedRaysAllocateNothingOnceTheirListsAreBuilt() {
+        SplittableRandom r = new SplittableRandom(7);
+        List<Entity> es = new ArrayList<>();
+        for (int k = 0; k < 2000; k++) {
+            es.add(sphere(v(r.nextDouble() * 8 - 4, r.nextDouble() * 8 - 4, r.nextDouble() * 8 - 4), 0.15, PAINTS[0]));
+        }
+        Vec3 light = v(-6, 9, -10);
+        Settings s = settings(camera(v(0, 0, -12), Vec3.ZERO, 40), List.of(point(light, rgb(1, 1, 1), 0, 0.1)),
+                Background.BLACK, 64, 48);
+        Tracer t = tracer(es, s);
+        CameraRays camera = new CameraRays(s.camera(), 64, 48);
+        double[] d = new double[3];
+        var threads = (com.sun.management.ThreadMXBean) java.lang.management.ManagementFactory.getThreadMXBean();
+        long id = Thread.currentThread().getId();
+        long allocated = 0;
+        int listed = 0;
+        for (int pass = 0; pass < 6; pass++) {
+            long before = threads.getThreadAllocatedBytes(id);
+            for (int j = 0; j < 48; j++) {
+                for (int i = 0; i < 64; i++) {
+                    camera.direction(i, j, 0.5, 0.5, d);
+                    if (!t.candidates.block(camera, i, j)) continue;
+                    if (!t.blockHit(camera.px, camera.py, camera.pz, d[0], d[1], d[2])) continue;
+                    int shape = t.hit.shape;
+                    double hx = camera.px + t.hit.t * d[0], hy = camera.py + t.hit.t * d[1], hz = camera.pz + t.hit.t * d[2];
+                    t.shading = shape;
+                    if (pass == 5 && t.candidates.shadow(shape, 0, hx, hy, hz) >= 0) listed++;
+                    t.shadowTo(hx, hy, hz, light.x(), light.y(), light.z(), 0, 0);
+                }
+            }
+            // A pair's list is built after its fourth walk: by the last pass every list is built.
+            if (pass == 5) allocated = threads.getThreadAllocatedBytes(id) - before;
+        }
+        assertThat(listed).isGreaterThan(100);
+        assertThat(allocated).as("bytes allocated by %d listed shadow rays and their blocks' camera rays", listed).isZero();
     }
 }
