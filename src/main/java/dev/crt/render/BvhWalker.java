@@ -136,9 +136,12 @@ final class BvhWalker {
         }
     }
 
+    /** Inner nodes {@link #nextAny} has opened, counted for ever: what a shadow list is weighed against. */
+    int anySteps;
+
     /** The next leaf whose box the segment (tMin, tMax) passes through, in no useful order; {@link #END} when done. */
     int nextAny(double tMax) {
-        int node = this.node, top = this.top;
+        int node = this.node, top = this.top, steps = 0;
         int[] stack = this.stack, children = this.children;
         double[] b = this.boxes;
         double ox = this.ox, oy = this.oy, oz = this.oz, ix = this.ix, iy = this.iy, iz = this.iz;
@@ -149,6 +152,7 @@ final class BvhWalker {
                 if (top == 0) {
                     this.node = POP;
                     this.top = 0;
+                    anySteps += steps;
                     return END;
                 }
                 node = stack[--top];
@@ -156,8 +160,10 @@ final class BvhWalker {
             if (Bvh.isLeaf(node)) {
                 this.node = POP;
                 this.top = top;
+                anySteps += steps;
                 return node;
             }
+            steps++;
             int k = Bvh.NODE * node;
             double ln = tMin, lf = tMax, rn = tMin, rf = tMax, t;
             if ((t = (b[k + nx] - ox) * ix) > ln) ln = t;

@@ -54,6 +54,11 @@ final class CameraRays {
 
     boolean hasLens() { return lensRadius > 0; }
 
+    /** Whether every ray leaves the camera's position through the image plane (perspective, no lens). */
+    boolean pinhole() {
+        return !hasLens() && (!Features.PROJECTIONS || projection == Projection.PERSPECTIVE);
+    }
+
     /**
      * The ray cone's spread (radians) of one pixel along the unit direction d: for perspective
      * 2h/H·(d·f)², the angle a pixel spans in the radial direction there, so that the cone's width

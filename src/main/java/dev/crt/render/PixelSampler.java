@@ -45,6 +45,9 @@ final class PixelSampler {
     /** Per pixel, the adaptive pilot's largest channel variance; shared by the render's samplers. */
     private final float[] pilotVariance;
 
+    /** Whether camera rays take their block's list of candidates (a pinhole camera, CRT's model, a BVH). */
+    private final boolean blocks;
+
     /** Asked between rows of sub-pixels (and runs of samples), so that a cancel is prompt however many samples a pixel takes. */
     private final BooleanSupplier stop;
 
@@ -76,6 +79,12 @@ final class PixelSampler {
         height = settings.height();
         spreadShare = 1.0 / grid;
         this.pilotVariance = pilotVariance;
+        blocks = tracer.candidates != null && camera.pinhole() && original == null;
+    }
+
+    /** Whether camera rays take their block's list of candidates: pixels are best visited block by block. */
+    boolean blocks() {
+        return blocks;
     }
 
     /** Writes the linear colour of pixel (i, j) into {@code out[0..2]}; a stopped pixel's colour is partial and unused. */
@@ -275,6 +284,7 @@ final class PixelSampler {
     private void trace(int i, int j, double sx, double sy, double w) {
         camera.direction(i, j, sx, sy, direction);
         tracer.primaryRays++;
+        if (blocks) tracer.blockRay = tracer.candidates.block(camera, i, j);
         if (Features.TEXTURES && tracer.footprints) tracer.spread = camera.spread(direction) * spreadShare;
         if (Features.ORIGINAL && original != null) {
             original.trace(camera.px, camera.py, camera.pz, direction[0], direction[1], direction[2], depth, 0, w, w, w);

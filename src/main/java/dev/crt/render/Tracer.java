@@ -45,6 +45,14 @@ final class Tracer {
      * either way, since one opaque crossing makes the shadow factor 0.
      */
     private final int[] lastOccluder;
+    /** Null without a BVH. */
+    final Candidates candidates;
+    /** Set by the pixel sampler: the next ray traced is a camera ray of the current block of {@link #candidates}. */
+    boolean blockRay;
+    /** The shape whose surface is being shaded (its shadow rays may take its list), or {@link #NONE}. */
+    int shading = NONE;
+    /** Shadow rays that walked the BVH, and the items they tested (weighed as {@link Candidates#weight}). */
+    private int walks, tested;
     /** The item that made the last {@link #blocked} true. */
     int blocker = NONE;
 
@@ -93,6 +101,7 @@ final class Tracer {
         lastOccluder = new int[lights.count];
         java.util.Arrays.fill(lastOccluder, NONE);
         walker = new BvhWalker(bvh == null ? 1 : bvh.depth + 2);
+        candidates = bvh == null ? null : new Candidates(bvh, items, shapes, lights);
         absorbing = geometry.materials.absorbing();
         csgScratch.absorbing = absorbing;
         footprints = !geometry.materials.textures.isEmpty();
@@ -110,7 +119,9 @@ final class Tracer {
     /** Adds (wr, wg, wb) ⊙ trace(o + t·d, depth) to the accumulator. */
     void trace(double ox, double oy, double oz, double dx, double dy, double dz, int depth,
             double wr, double wg, double wb) {
-        if (!closestHit(ox, oy, oz, dx, dy, dz, Double.POSITIVE_INFINITY)) {
+        boolean block = blockRay;
+        blockRay = false;
+        if (!(block ? blockHit(ox, oy, oz, dx, dy, dz) : closestHit(ox, oy, oz, dx, dy, dz, Double.POSITIVE_INFINITY))) {
             background.shade(dx, dy, dz, colour);
             accR += wr * colour[0];
             accG += wg * colour[1];
@@ -176,6 +187,7 @@ final class Tracer {
         if (local != 0) {
             // On smooth meshes the lights are looked at from the shading point and along the shading
             // normal; shadow rays still leave along the geometric normal.
+            shading = s;
             if (Features.GOOCH && gooch != null && mat[m + Materials.MODEL] == Materials.GOOCH) {
                 gooch.shade(m, cr, cg, cb, ks, er, eg, eb, px, py, pz, snx, sny, snz, -dx, -dy, -dz, colour);
             } else if (Features.SHAPES && surface.shaded) {
@@ -185,6 +197,7 @@ final class Tracer {
                 phong.shade(m, cr, cg, cb, ks, er, eg, eb, px, py, pz, nx, ny, nz, snx, sny, snz, -dx, -dy, -dz, delta,
                         colour);
             }
+            shading = NONE;
             accR += wr * local * colour[0];
             accG += wg * local * colour[1];
             accB += wb * local * colour[2];
@@ -338,7 +351,7 @@ final class Tracer {
             depthG = 0;
             depthB = 0;
         }
-        double s = transmittance(ox, oy, oz, ls.wx, ls.wy, ls.wz, Double.POSITIVE_INFINITY, light);
+        double s = transmittance(ox, oy, oz, ls.wx, ls.wy, ls.wz, Double.POSITIVE_INFINITY, light, -1);
         if (Features.ABSORPTION && absorbing) absorbed();
         return s;
     }
@@ -353,7 +366,16 @@ final class Tracer {
         double sx = qx - ox, sy = qy - oy, sz = qz - oz;
         double reach = Math.sqrt(sx * sx + sy * sy + sz * sz);
         double margin = Math.max(Math.abs(side), OFFSET * Math.max(Math.max(Math.abs(qx), Math.abs(qy)), Math.abs(qz)));
-        double s = reach > margin ? transmittance(ox, oy, oz, sx / reach, sy / reach, sz / reach, reach - margin, light) : 1;
+        int list = -1;
+        if (shading != NONE && candidates != null && qx == lights.x[light] && qy == lights.y[light] && qz == lights.z[light]
+                && lights.kind[light] != Lights.PARALLEL) {
+            list = candidates.shadow(shading, light, ox, oy, oz);
+        }
+        int walks = this.walks, tested = this.tested + walker.anySteps;
+        double s = reach > margin ? transmittance(ox, oy, oz, sx / reach, sy / reach, sz / reach, reach - margin, light, list) : 1;
+        if (list < 0 && shading != NONE && candidates != null) {
+            candidates.walked(this.walks - walks, this.tested + walker.anySteps - tested);
+        }
         if (Features.ABSORPTION && absorbing) absorbed();
         return s;
     }
@@ -389,13 +411,8 @@ final class Tracer {
     /** The nearest surface with 0 < t < tMax into {@link #hit}; {@link #ray} keeps the ray for the surface query. */
     boolean closestHit(double ox, double oy, double oz, double dx, double dy, double dz, double tMax) {
         ray.set(ox, oy, oz, dx, dy, dz);
-        boolean found = false;
-        for (int item : unbounded) {
-            if (hitItem(item, tMax)) {
-                found = true;
-                tMax = hit.t;
-            }
-        }
+        boolean found = unboundedHit(tMax);
+        if (found) tMax = hit.t;
         if (bvh == null) {
             for (int item : items) {
                 if (hitItem(item, tMax)) {
@@ -413,6 +430,40 @@ final class Tracer {
                     found = true;
                     tMax = hit.t;
                 }
+            }
+        }
+        return found;
+    }
+
+    /** The nearest of the unbounded items with 0 < t < tMax into {@link #hit}, for the ray in {@link #ray}. */
+    private boolean unboundedHit(double tMax) {
+        boolean found = false;
+        for (int item : unbounded) {
+            if (hitItem(item, tMax)) {
+                found = true;
+                tMax = hit.t;
+            }
+        }
+        return found;
+    }
+
+    /**
+     * {@link #closestHit} (tMax = +∞) of a camera ray of the current block of {@link #candidates}:
+     * its list holds every item the block's rays can meet, nearest lower bound first, so the same
+     * hit is found (where two items give exactly the same t, the one listed first).
+     */
+    boolean blockHit(double ox, double oy, double oz, double dx, double dy, double dz) {
+        ray.set(ox, oy, oz, dx, dy, dz);
+        double tMax = Double.POSITIVE_INFINITY;
+        boolean found = unboundedHit(tMax);
+        if (found) tMax = hit.t;
+        Candidates c = candidates;
+        int[] list = c.blockItems;
+        double[] near = c.blockNear;
+        for (int k = 0, n = c.blockCount; k < n && near[k] < tMax; k++) {
+            if (hitItem(list[k], tMax)) {
+                found = true;
+                tMax = hit.t;
             }
         }
         return found;
@@ -463,9 +514,12 @@ final class Tracer {
 
     /**
      * The shadow factor of the segment o + t·w, 0 < t < tMax: the product of kt over every surface
-     * it crosses, stopping at the first opaque one.
+     * it crosses, stopping at the first opaque one. With a shadow list of {@link #candidates} ({@code list}
+     * ≥ 0, one holding every item the segment can meet) its items are tested instead of walking: they
+     * are in the walk's leaf order, and an item the segment does not cross gives the factor 1, so the
+     * product is the walk's to the bit.
      */
-    double transmittance(double ox, double oy, double oz, double wx, double wy, double wz, double tMax, int light) {
+    double transmittance(double ox, double oy, double oz, double wx, double wy, double wz, double tMax, int light, int list) {
         shadowRays++;
         ray.set(ox, oy, oz, wx, wy, wz);
         int cached = lastOccluder[light];
@@ -482,10 +536,20 @@ final class Tracer {
             }
             return product;
         }
+        if (list >= 0) {
+            int[] pool = candidates.pool;
+            for (int k = list + 2, end = k + pool[list]; k < end; k++) {
+                product *= itemTransmittance(pool[k], tMax);
+                if (product == 0) return blockedBy(light, pool[k]);
+            }
+            return product;
+        }
         BvhWalker walk = walker;
+        walks++;
         if (!walk.start(bvh, ray, 0, tMax)) return product;
         for (int leaf = walk.nextAny(tMax); leaf != BvhWalker.END; leaf = walk.nextAny(tMax)) {
             for (int k = Bvh.leafFirst(leaf), end = k + Bvh.leafCount(leaf); k < end; k++) {
+                tested += items[k] < 0 ? Candidates.HEAVY : 1;
                 product *= itemTransmittance(items[k], tMax);
                 if (product == 0) return blockedBy(light, items[k]);
             }

@@ -57,7 +57,7 @@ final class RayBatch {
 
     /** The shadow factor of ray i towards light 0. */
     double transmittance(Tracer t, int i) {
-        return t.transmittance(o[3 * i], o[3 * i + 1], o[3 * i + 2], d[3 * i], d[3 * i + 1], d[3 * i + 2], tMax[i], 0);
+        return t.transmittance(o[3 * i], o[3 * i + 1], o[3 * i + 2], d[3 * i], d[3 * i + 1], d[3 * i + 2], tMax[i], 0, -1);
     }
 
     /** How many of the rays hit something: to check in set-up that a batch does what its benchmark says. */

@@ -1,0 +1,219 @@
+package dev.crt.render;
+
+import static dev.crt.render.Scenes.*;
+import static org.assertj.core.api.Assertions.assertThat;
+
+import dev.crt.geom.Transform;
+import dev.crt.geom.Vec3;
+import dev.crt.scene.Background;
+import dev.crt.scene.Camera;
+import dev.crt.scene.CsgOperation;
+import dev.crt.scene.Entity;
+import dev.crt.scene.Material;
+import dev.crt.scene.Mesh;
+import dev.crt.scene.MeshData;
+import dev.crt.scene.Rgb;
+import dev.crt.scene.Settings;
+import dev.crt.scene.SourceSpan;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.SplittableRandom;
+import org.junit.jupiter.api.Test;
+
+/** The candidate lists give every ray what its own walk of the BVH gives: the same nearest hit, the same shadow factor to the bit. */
+class CandidatesTest {
+    private static final double STEP = 0.37, SHIFT = 0.1;
+    private static final MeshData TORUS = Meshes.torus(0.3, 0.1, 10, 6);
+    /** Opaque, transparent of several kt (so a product's order shows in its last bit), absorbing. */
+    private static final Material[] PAINTS = {
+        matte(rgb(0.5, 0.5, 0.5)),
+        material(rgb(0.9, 0.9, 0.9), 0.2, 0, 30, 0, 0.3, 1.3),
+        material(rgb(0.9, 0.9, 0.9), 0.2, 0, 30, 0, 0.77, 1.3),
+        material(rgb(0.9, 0.9, 0.9), 0.2, 0, 30, 0, 0.9137, 1.3),
+        new Material(rgb(0.8, 0.8, 0.8), 0.3, 0, 30, 0, 0.6, 1.5, Rgb.BLACK, true, false, rgb(0.3, 0.1, 0.7)),
+    };
+
+    private static Vec3 gridPoint(SplittableRandom r) {
+        return v(STEP * (r.nextInt(9) - 4) + SHIFT, STEP * (r.nextInt(9) - 4) + SHIFT, STEP * (r.nextInt(9) - 4) + SHIFT);
+    }
+
+    /** Boxes packed on a grid (shared faces, edges and corners), spheres, sphere-minus-box drops, small meshes, now and then a plane. */
+    private static List<Entity> field(SplittableRandom r, boolean transparent) {
+        List<Entity> es = new ArrayList<>();
+        int n = 20 + r.nextInt(250);
+        for (int k = 0; k < n; k++) {
+            Material m = transparent ? PAINTS[r.nextInt(PAINTS.length)] : PAINTS[0];
+            Vec3 c = gridPoint(r), e = v(STEP, STEP, STEP);
+            switch (r.nextInt(4)) {
+                case 0 -> es.add(box(c, c.plus(e), m));
+                case 1 -> es.add(sphere(c.plus(e.times(r.nextDouble())), STEP * (0.1 + r.nextDouble() * 0.6), m));
+                case 2 -> es.add(csg(CsgOperation.DIFFERENCE, sphere(c, STEP * 0.7, m), box(c, c.plus(e), m)));
+                default -> es.add(new Mesh(TORUS, r.nextBoolean(), m, Transform.translation(c), SourceSpan.NONE));
+            }
+        }
+        if (r.nextInt(3) == 0) es.add(plane(v(0, 1, 0), v(0, -1.7, 0), PAINTS[0]));
+        return es;
+    }
+
+    private static Tracer tracer(List<Entity> es, Settings s) {
+        return new Tracer(new SceneGeometry(es), new Lights(s.lights()), new BackgroundShader(s.background(), 1));
+    }
+
+    private static Camera aimed(SplittableRandom r) {
+        if (r.nextBoolean()) {
+            // From a grid point straight along z: the middle column and row of rays run along box faces.
+            Vec3 p = v(STEP * (r.nextInt(9) - 4) + SHIFT, STEP * (r.nextInt(9) - 4) + SHIFT, -4);
+            return camera(p, p.plus(v(0, 0, 1)), 20 + r.nextInt(70));
+        }
+        Vec3 p = v(r.nextGaussian() * 3, r.nextGaussian() * 3, r.nextGaussian() * 3 - 5);
+        return camera(p, v(r.nextGaussian(), r.nextGaussian(), r.nextGaussian()), 10 + r.nextInt(100));
+    }
+
+    @Test
+    void aBlocksListGivesEachCameraRayTheHitOfItsOwnWalk() {
+        SplittableRandom r = new SplittableRandom(20261202);
+        int listed = 0, walked = 0, hits = 0, ties = 0;
+        double[] d = new double[3];
+        for (int scene = 0; scene < 24; scene++) {
+            // Odd sizes too: the last row and column of blocks are cut short.
+            int w = 2 * (8 + r.nextInt(40)) + (scene % 3 == 0 ? 1 : 0), h = 2 * (6 + r.nextInt(30));
+            Settings s = settings(aimed(r), List.of(), Background.BLACK, w, h);
+            Tracer t = tracer(field(r, r.nextBoolean()), s);
+            CameraRays camera = new CameraRays(s.camera(), w, h);
+            assertThat(camera.pinhole()).isTrue();
+            for (int k = 0; k < 4000; k++) {
+                int i = r.nextInt(w), j = r.nextInt(h);
+                if (k % 5 == 0) {
+                    // through the middle of the image, along the camera's axis
+                    i = w / 2;
+                    j = h / 2;
+                }
+                double sx = sub(r), sy = sub(r);
+                camera.direction(i, j, sx, sy, d);
+                boolean lone = t.closestHit(camera.px, camera.py, camera.pz, d[0], d[1], d[2], Double.POSITIVE_INFINITY);
+                double tLone = t.hit.t;
+                int shape = t.hit.shape, face = t.hit.face;
+                boolean flip = t.hit.flip;
+                if (!t.candidates.block(camera, i, j)) {
+                    walked++;
+                    continue;
+                }
+                listed++;
+                boolean fast = t.blockHit(camera.px, camera.py, camera.pz, d[0], d[1], d[2]);
+                String what = "scene " + scene + ", pixel (" + i + ", " + j + ") + (" + sx + ", " + sy + ")";
+                assertThat(fast).as(what).isEqualTo(lone);
+                if (!lone) continue;
+                hits++;
+                if (t.hit.t != tLone || t.hit.shape != shape) {
+                    // Two surfaces within rounding of each other (the field may place two items
+                    // alike): the walk may cull the one whose box it enters at the other's t.
+                    assertThat(t.hit.t).as(what).isCloseTo(tLone, org.assertj.core.data.Offset.offset(1e-12 * tLone));
+                    ties++;
+                    continue;
+                }
+                assertThat(t.hit.face).as(what).isEqualTo(face);
+                assertThat(t.hit.flip).as(what).isEqualTo(flip);
+            }
+        }
+        System.out.printf("block lists: %d rays listed, %d walked, %d hits, %d ties%n", listed, walked, hits, ties);
+        // All of them, when counted, between two tori meshes placed at the same point (most at exactly the same t).
+        assertThat(ties).isLessThan(hits / 200);
+        assertThat(listed).isGreaterThan(10 * walked);
+        assertThat(hits).isBetween(listed / 10, listed - listed / 10);
+    }
+
+    /** A sub-pixel position: the pixel's edges, its centre, or anywhere. */
+    private static double sub(SplittableRandom r) {
+        return switch (r.nextInt(4)) {
+            case 0 -> 0;
+            case 1 -> Math.nextDown(1.0);
+            case 2 -> 0.5;
+            default -> r.nextDouble();
+        };
+    }
+
+    @Test
+    void aShadowListGivesEachShadowRayTheFactorOfItsOwnWalkToTheBit() {
+        SplittableRandom r = new SplittableRandom(42);
+        int listed = 0, partial = 0, rays = 0;
+        double[] d = new double[3];
+        for (int scene = 0; scene < 16; scene++) {
+            Vec3 light = r.nextBoolean() ? gridPoint(r) : v(r.nextGaussian() * 8, 5 + r.nextDouble() * 10, r.nextGaussian() * 8);
+            Settings s = settings(aimed(r), List.of(point(light, rgb(1, 1, 1), 0, 0.1)), Background.BLACK, 64, 48);
+            List<Entity> es = field(r, true);
+            Tracer listing = tracer(es, s), walking = tracer(es, s);
+            CameraRays camera = new CameraRays(s.camera(), 64, 48);
+            SurfacePoint p = new SurfacePoint();
+            for (int k = 0; k < 3000; k++) {
+                // A shadow ray from a surface point a camera ray finds, off the surface by the tracer's offset, to the light.
+                camera.direction(r.nextInt(64), r.nextInt(48), r.nextDouble(), r.nextDouble(), d);
+                if (!walking.closestHit(camera.px, camera.py, camera.pz, d[0], d[1], d[2], Double.POSITIVE_INFINITY)) continue;
+                int shape = walking.hit.shape;
+                walking.shapes().surface(shape, walking.hit.face, walking.hit.t, walking.ray, p);
+                double delta = Tracer.OFFSET * Math.max(Math.max(Math.abs(p.px), Math.abs(p.py)),
+                        Math.max(Math.abs(p.pz), walking.shapes().scale[shape]));
+                double nw = p.nx * (light.x() - p.px) + p.ny * (light.y() - p.py) + p.nz * (light.z() - p.pz);
+                double side = nw > 0 ? delta : -delta;
+                double ox = p.px + side * p.nx, oy = p.py + side * p.ny, oz = p.pz + side * p.nz;
+                walking.shading = Tracer.NONE;
+                double lone = walking.shadowTo(ox, oy, oz, light.x(), light.y(), light.z(), side, 0);
+                listing.shading = shape;
+                boolean list = listing.candidates.shadow(shape, 0, ox, oy, oz) >= 0;
+                double fast = listing.shadowTo(ox, oy, oz, light.x(), light.y(), light.z(), side, 0);
+                String what = "scene " + scene + ", ray " + k + " from shape " + shape;
+                assertThat(Double.doubleToRawLongBits(fast)).as(what).isEqualTo(Double.doubleToRawLongBits(lone));
+                assertThat(listing.shadowR).as(what).isEqualTo(walking.shadowR);
+                assertThat(listing.shadowG).as(what).isEqualTo(walking.shadowG);
+                assertThat(listing.shadowB).as(what).isEqualTo(walking.shadowB);
+                rays++;
+                if (list) {
+                    listed++;
+                    if (lone > 0 && lone < 1) partial++;
+                }
+            }
+        }
+        System.out.printf("shadow lists: %d rays, %d listed, %d partly lit%n", rays, listed, partial);
+        // The lists were taken for many rays (the others' pairs weigh more listed than walked), and
+        // many of those crossed transparent casters.
+        assertThat(listed).isGreaterThan(rays / 10);
+        assertThat(partial).isGreaterThan(listed / 20);
+    }
+
+    @Test
+    void listedRaysAllocateNothingOnceTheirListsAreBuilt() {
+        SplittableRandom r = new SplittableRandom(7);
+        List<Entity> es = new ArrayList<>();
+        for (int k = 0; k < 2000; k++) {
+            es.add(sphere(v(r.nextDouble() * 8 - 4, r.nextDouble() * 8 - 4, r.nextDouble() * 8 - 4), 0.15, PAINTS[0]));
+        }
+        Vec3 light = v(-6, 9, -10);
+        Settings s = settings(camera(v(0, 0, -12), Vec3.ZERO, 40), List.of(point(light, rgb(1, 1, 1), 0, 0.1)),
+                Background.BLACK, 64, 48);
+        Tracer t = tracer(es, s);
+        CameraRays camera = new CameraRays(s.camera(), 64, 48);
+        double[] d = new double[3];
+        var threads = (com.sun.management.ThreadMXBean) java.lang.management.ManagementFactory.getThreadMXBean();
+        long id = Thread.currentThread().getId();
+        long allocated = 0;
+        int listed = 0;
+        for (int pass = 0; pass < 6; pass++) {
+            long before = threads.getThreadAllocatedBytes(id);
+            for (int j = 0; j < 48; j++) {
+                for (int i = 0; i < 64; i++) {
+                    camera.direction(i, j, 0.5, 0.5, d);
+                    if (!t.candidates.block(camera, i, j)) continue;
+                    if (!t.blockHit(camera.px, camera.py, camera.pz, d[0], d[1], d[2])) continue;
+                    int shape = t.hit.shape;
+                    double hx = camera.px + t.hit.t * d[0], hy = camera.py + t.hit.t * d[1], hz = camera.pz + t.hit.t * d[2];
+                    t.shading = shape;
+                    if (pass == 5 && t.candidates.shadow(shape, 0, hx, hy, hz) >= 0) listed++;
+                    t.shadowTo(hx, hy, hz, light.x(), light.y(), light.z(), 0, 0);
+                }
+            }
+            // A pair's list is built after its fourth walk: by the last pass every list is built.
+            if (pass == 5) allocated = threads.getThreadAllocatedBytes(id) - before;
+        }
+        assertThat(listed).isGreaterThan(100);
+        assertThat(allocated).as("bytes allocated by %d listed shadow rays and their blocks' camera rays", listed).isZero();
+    }
+}
