@@ -57,8 +57,11 @@ final class Candidates {
     /** The camera's position: the pyramid's apex. */
     private double cx, cy, cz;
 
-    /** More (shape, light) pairs than this keep the walk: their table would take more than 256 MB a thread. */
-    private static final long MAX_PAIRS = 1L << 26;
+    /**
+     * More (shape, light) pairs than this keep the walk: their table would take more than 16 MB a
+     * thread (a million spheres under four lights still fit).
+     */
+    private static final long MAX_PAIRS = 1L << 22;
     /** Whether the scene has few enough pairs for shadow lists. */
     private final boolean shadowLists;
     /** Per shape × light: 0 unseen, negative on trial (see {@link #TRIAL_BITS}), {@link #WALK}, or 1 + the list's index in {@link #pool}. */
