@@ -60,6 +60,14 @@ final class CameraRays {
     }
 
     /**
+     * Whether the rays of a block of pixels lie in the block's frustum from the camera, widened by
+     * the lens where it has one: perspective, with no lens or one focused at a finite distance.
+     */
+    boolean framed() {
+        return pinhole() || hasLens() && focalDistance > 0 && focalDistance < Double.POSITIVE_INFINITY;
+    }
+
+    /**
      * The ray cone's spread (radians) of one pixel along the unit direction d: for perspective
      * 2h/H·(d·f)², the angle a pixel spans in the radial direction there, so that the cone's width
      * stretched by the slant, spread·t/|d·N|, is exactly one pixel's width on a plane facing the

@@ -54,8 +54,12 @@ final class Candidates {
     int blockCount;
     /** The frustum's five planes (four sides and the front) through the camera: normal and the margin to allow. */
     private final double[] plane = new double[5 * 4];
+    /** The length of each plane's normal, for the lens's margin. */
+    private final double[] normLength = new double[5];
     /** The camera's position: the pyramid's apex. */
     private double cx, cy, cz;
+    /** A lens camera's radius (0 for a pinhole), its focal distance and its view axis. */
+    private double lens, focal, vx, vy, vz;
 
     /**
      * More (shape, light) pairs than this keep the walk: their table would take more than 16 MB a
@@ -89,8 +93,8 @@ final class Candidates {
     }
 
     /**
-     * Makes the current block list the one of the block holding pixel (i, j) of a pinhole camera;
-     * returns false when that block's rays are to walk the tree (its list would be too long).
+     * Makes the current block list the one of the block holding pixel (i, j) of a camera whose
+     * {@link CameraRays#framed} holds; returns false when that block's rays are to walk the tree (its list would be too long).
      */
     boolean block(CameraRays camera, int i, int j) {
         int width = (int) camera.width, height = (int) camera.height;
@@ -119,6 +123,14 @@ final class Candidates {
         cx = c.px;
         cy = c.py;
         cz = c.pz;
+        // A lens ray meets the pinhole ray through the same point in focus there, and leaves the
+        // lens at most R from the camera: at depth z along the view axis the two are at most
+        // R·|1 − z/F| apart, so the sides are moved out by that much at the box's depths.
+        lens = c.hasLens() ? c.lensRadius * (1 + 1e-6) : 0;
+        focal = c.focalDistance;
+        vx = c.fx;
+        vy = c.fy;
+        vz = c.fz;
         // Each side is spanned by one edge direction of the rectangle and the other axis of the image.
         side(0, c.fx + a0 * c.rx, c.fy + a0 * c.ry, c.fz + a0 * c.rz, c.ux, c.uy, c.uz, mx, my, mz);
         side(1, c.fx + a1 * c.rx, c.fy + a1 * c.ry, c.fz + a1 * c.rz, c.ux, c.uy, c.uz, mx, my, mz);
@@ -158,6 +170,7 @@ final class Candidates {
         p[4 * k] = nx;
         p[4 * k + 1] = ny;
         p[4 * k + 2] = nz;
+        normLength[k] = Math.sqrt(nx * nx + ny * ny + nz * nz);
         double camera = Math.max(Math.abs(cx), Math.max(Math.abs(cy), Math.abs(cz)));
         p[4 * k + 3] = WIDEN * (Math.abs(nx) + Math.abs(ny) + Math.abs(nz)) * (camera + sceneSize);
     }
@@ -166,22 +179,34 @@ final class Candidates {
     private boolean inFrustum(double x0, double y0, double z0, double x1, double y1, double z1) {
         double[] p = plane;
         double lx = x0 - cx, ly = y0 - cy, lz = z0 - cz, hx = x1 - cx, hy = y1 - cy, hz = z1 - cz;
+        double spread = 0;
+        if (lens > 0) {
+            // R·|1 − z/F| is convex in z: its largest value over the box's depths is at one end.
+            double mid = (lx + hx) / 2 * vx + (ly + hy) / 2 * vy + (lz + hz) / 2 * vz;
+            double half = (hx - lx) / 2 * Math.abs(vx) + (hy - ly) / 2 * Math.abs(vy) + (hz - lz) / 2 * Math.abs(vz);
+            spread = lens * Math.max(Math.abs(1 - (mid - half) / focal), Math.abs(1 - (mid + half) / focal)) * (1 + 1e-6);
+        }
         for (int k = 0; k < 20; k += 4) {
             double nx = p[k], ny = p[k + 1], nz = p[k + 2];
             double far = (nx >= 0 ? nx * hx : nx * lx) + (ny >= 0 ? ny * hy : ny * ly) + (nz >= 0 ? nz * hz : nz * lz);
-            if (far < -p[k + 3]) return false;
+            // The front plane needs no margin: every lens ray leaves the lens plane forwards.
+            double margin = k < 16 ? p[k + 3] + spread * normLength[k / 4] : p[k + 3];
+            if (far < -margin) return false;
         }
         return true;
     }
 
-    /** A lower bound of the parameter t at which a camera ray (unit direction) meets anything inside the box. */
+    /**
+     * A lower bound of the parameter t at which a camera ray (unit direction) meets anything inside
+     * the box; a lens ray starts at most R from the camera.
+     */
     private double nearest(double x0, double y0, double z0, double x1, double y1, double z1) {
         double dx = Math.max(0, Math.max(x0 - cx, cx - x1));
         double dy = Math.max(0, Math.max(y0 - cy, cy - y1));
         double dz = Math.max(0, Math.max(z0 - cz, cz - z1));
         double d = Math.sqrt(dx * dx + dy * dy + dz * dz);
         // Hits of grazing rays are rounded by up to about √ε of their distance.
-        return d - 1e-6 * d - WIDEN * (sceneSize + Math.max(Math.abs(cx), Math.max(Math.abs(cy), Math.abs(cz))));
+        return d - 1e-6 * d - lens - WIDEN * (sceneSize + Math.max(Math.abs(cx), Math.max(Math.abs(cy), Math.abs(cz))));
     }
 
     /**

@@ -45,7 +45,7 @@ final class PixelSampler {
     /** Per pixel, the adaptive pilot's largest channel variance; shared by the render's samplers. */
     private final float[] pilotVariance;
 
-    /** Whether camera rays take their block's list of candidates (a pinhole camera, CRT's model, a BVH). */
+    /** Whether camera rays take their block's list of candidates (a perspective camera, CRT's model, a BVH). */
     private final boolean blocks;
 
     /** Asked between rows of sub-pixels (and runs of samples), so that a cancel is prompt however many samples a pixel takes. */
@@ -79,7 +79,7 @@ final class PixelSampler {
         height = settings.height();
         spreadShare = 1.0 / grid;
         this.pilotVariance = pilotVariance;
-        blocks = tracer.candidates != null && camera.pinhole() && original == null;
+        blocks = tracer.candidates != null && camera.framed() && original == null;
     }
 
     /** Whether camera rays take their block's list of candidates: pixels are best visited block by block. */
@@ -298,6 +298,7 @@ final class PixelSampler {
         camera.aperture.sample(u1, u2, u3, lens);
         camera.throughLens(lens[0], lens[1], origin, direction);
         tracer.primaryRays++;
+        if (blocks) tracer.blockRay = tracer.candidates.block(camera, i, j);
         if (Features.TEXTURES && tracer.footprints) tracer.spread = camera.spread(direction) * spreadShare;
         if (Features.ORIGINAL && original != null) {
             original.trace(origin[0], origin[1], origin[2], direction[0], direction[1], direction[2], depth, 0, w, w, w);

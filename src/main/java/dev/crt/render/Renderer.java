@@ -123,8 +123,7 @@ public final class Renderer {
                     // Checked at every pixel (and inside it, by the sampler): a pixel of thousands of
                     // samples is the longest a cancel waits, not a row of a tile.
                     // Block by block when camera rays share their block's list of candidates, else
-                    // row by row as before (drops.crt, whose lens rays take no list, measured slower
-                    // block by block).
+                    // row by row as before (the 2015 model and the 360° projections take no list).
                     for (int by = y0; by < y1; by += block) {
                         for (int bx = x0; bx < x1; bx += block) {
                             for (int y = by, ye = Math.min(by + block, y1); y < ye; y++) {

@@ -5,6 +5,7 @@ import static org.assertj.core.api.Assertions.assertThat;
 
 import dev.crt.geom.Transform;
 import dev.crt.geom.Vec3;
+import dev.crt.scene.ApertureShape;
 import dev.crt.scene.Background;
 import dev.crt.scene.Camera;
 import dev.crt.scene.CsgOperation;
@@ -71,16 +72,35 @@ class CandidatesTest {
 
     @Test
     void aBlocksListGivesEachCameraRayTheHitOfItsOwnWalk() {
-        SplittableRandom r = new SplittableRandom(20261202);
+        checkBlocks(new SplittableRandom(20261202), false);
+    }
+
+    @Test
+    void aBlocksListGivesEachLensRayTheHitOfItsOwnWalk() {
+        checkBlocks(new SplittableRandom(20261203), true);
+    }
+
+    /**
+     * Camera rays of 24 random fields, each through its block's list and by its own walk: the same
+     * hit. With {@code lens}, the camera has a lens (up to a tenth of the field's size, focused
+     * before, inside or behind the field) and each ray leaves it at a random point, its edge included.
+     */
+    private static void checkBlocks(SplittableRandom r, boolean lens) {
         int listed = 0, walked = 0, hits = 0, ties = 0;
-        double[] d = new double[3];
+        double[] d = new double[3], o = new double[3], l = new double[2];
         for (int scene = 0; scene < 24; scene++) {
             // Odd sizes too: the last row and column of blocks are cut short.
             int w = 2 * (8 + r.nextInt(40)) + (scene % 3 == 0 ? 1 : 0), h = 2 * (6 + r.nextInt(30));
-            Settings s = settings(aimed(r), List.of(), Background.BLACK, w, h);
+            Camera aimed = aimed(r);
+            if (lens) {
+                aimed = new Camera(aimed.position(), aimed.pointing(), aimed.fov(), 0, 1 + r.nextInt(300),
+                        0.5 + 9 * r.nextDouble(), scene % 2 == 0 ? ApertureShape.CIRCLE : ApertureShape.HEXAGON, SourceSpan.NONE);
+            }
+            Settings s = settings(aimed, List.of(), Background.BLACK, w, h);
             Tracer t = tracer(field(r, r.nextBoolean()), s);
             CameraRays camera = new CameraRays(s.camera(), w, h);
-            assertThat(camera.pinhole()).isTrue();
+            assertThat(camera.framed()).isTrue();
+            assertThat(camera.hasLens()).isEqualTo(lens);
             for (int k = 0; k < 4000; k++) {
                 int i = r.nextInt(w), j = r.nextInt(h);
                 if (k % 5 == 0) {
@@ -90,7 +110,15 @@ class CandidatesTest {
                 }
                 double sx = sub(r), sy = sub(r);
                 camera.direction(i, j, sx, sy, d);
-                boolean lone = t.closestHit(camera.px, camera.py, camera.pz, d[0], d[1], d[2], Double.POSITIVE_INFINITY);
+                o[0] = camera.px;
+                o[1] = camera.py;
+                o[2] = camera.pz;
+                if (lens) {
+                    // The lens's rim (u1 near 1) as often as anywhere on it.
+                    camera.aperture.sample(r.nextBoolean() ? Math.nextDown(1.0) : r.nextDouble(), r.nextDouble(), r.nextDouble(), l);
+                    camera.throughLens(l[0], l[1], o, d);
+                }
+                boolean lone = t.closestHit(o[0], o[1], o[2], d[0], d[1], d[2], Double.POSITIVE_INFINITY);
                 double tLone = t.hit.t;
                 int shape = t.hit.shape, face = t.hit.face;
                 boolean flip = t.hit.flip;
@@ -99,7 +127,7 @@ class CandidatesTest {
                     continue;
                 }
                 listed++;
-                boolean fast = t.blockHit(camera.px, camera.py, camera.pz, d[0], d[1], d[2]);
+                boolean fast = t.blockHit(o[0], o[1], o[2], d[0], d[1], d[2]);
                 String what = "scene " + scene + ", pixel (" + i + ", " + j + ") + (" + sx + ", " + sy + ")";
                 assertThat(fast).as(what).isEqualTo(lone);
                 if (!lone) continue;
@@ -115,7 +143,8 @@ class CandidatesTest {
                 assertThat(t.hit.flip).as(what).isEqualTo(flip);
             }
         }
-        System.out.printf("block lists: %d rays listed, %d walked, %d hits, %d ties%n", listed, walked, hits, ties);
+        System.out.printf("block lists%s: %d rays listed, %d walked, %d hits, %d ties%n", lens ? " (lens)" : "", listed, walked,
+                hits, ties);
         // All of them, when counted, between two tori meshes placed at the same point (most at exactly the same t).
         assertThat(ties).isLessThan(hits / 200);
         assertThat(listed).isGreaterThan(10 * walked);
