@@ -77,7 +77,7 @@ final class Candidates {
     private double[] regions = new double[6 * 64];
     private int regionCount;
     /** The region box and the light point of the shadow list being built. */
-    private final double[] hull = new double[9];
+    private final double[] hull = new double[12];
 
     Candidates(Bvh bvh, int[] items, Shapes shapes, Lights lights) {
         this.bvh = bvh;
@@ -277,9 +277,22 @@ final class Candidates {
         h[3] = x1 + w;
         h[4] = y1 + w;
         h[5] = z1 + w;
-        h[6] = lights.x[light];
-        h[7] = lights.y[light];
-        h[8] = lights.z[light];
+        if (lights.kind[light] == Lights.PARALLEL) {
+            // Every shadow ray runs along the light's direction w to infinity: the region box swept
+            // along w. Swept by more than the diameter of the box around every item, nothing lies
+            // beyond, so its far end may be a box moved that far.
+            double wx = lights.x[light], wy = lights.y[light], wz = lights.z[light];
+            double far = (4 * Math.sqrt(3) * (sceneSize + big) + 1) / Math.sqrt(wx * wx + wy * wy + wz * wz);
+            for (int a = 0; a < 3; a++) {
+                double wa = a == 0 ? wx : a == 1 ? wy : wz;
+                h[6 + a] = h[a] + far * wa;
+                h[9 + a] = h[3 + a] + far * wa;
+            }
+        } else {
+            h[6] = h[9] = lights.x[light];
+            h[7] = h[10] = lights.y[light];
+            h[8] = h[11] = lights.z[light];
+        }
         int at = poolSize;
         if (pool.length < at + 2 + SHADOW_LIMIT) pool = Arrays.copyOf(pool, Math.max(2 * pool.length, at + 2 + SHADOW_LIMIT));
         if (regions.length < 6 * (regionCount + 1)) regions = Arrays.copyOf(regions, 2 * regions.length);
@@ -295,27 +308,32 @@ final class Candidates {
         return at + 1;
     }
 
-    /** Whether the box may meet the convex hull of the region box and the light point held in {@link #hull}. */
+    /**
+     * Whether the box may meet the convex hull of the region box and the far box held in
+     * {@link #hull} (the light's point, or the region box swept along a parallel light).
+     */
     private boolean inHull(double x0, double y0, double z0, double x1, double y1, double z1) {
         double[] h = hull;
-        // The hull is the union over s in [0, 1] of the region box moved s of the way to q, a box
-        // whose faces move linearly in s: per axis two linear conditions on s, each a half-line.
+        // The hull is the union over s in [0, 1] of the region box moved s of the way to the far
+        // box, a box whose faces move linearly in s: per axis two linear conditions on s, each a
+        // half-line.
         double lo = 0, hi = 1;
         for (int a = 0; a < 3; a++) {
-            double bl = h[a], bh = h[3 + a], q = h[6 + a];
+            double bl = h[a], bh = h[3 + a], ql = h[6 + a], qh = h[9 + a];
             double cl = a == 0 ? x0 : a == 1 ? y0 : z0, ch = a == 0 ? x1 : a == 1 ? y1 : z1;
-            double m = WIDEN * (Math.abs(bl) + Math.abs(bh) + Math.abs(q) + Math.abs(cl) + Math.abs(ch)) + Double.MIN_NORMAL;
-            // The moving box's low face stays at or below the box's high face: bl + s(q − bl) ≤ ch.
-            double g0 = bl - ch - m, g1 = q - ch - m;
+            double m = WIDEN * (Math.abs(bl) + Math.abs(bh) + Math.abs(ql) + Math.abs(qh) + Math.abs(cl) + Math.abs(ch))
+                    + Double.MIN_NORMAL;
+            // The moving box's low face stays at or below the box's high face: bl + s(ql − bl) ≤ ch.
+            double g0 = bl - ch - m, g1 = ql - ch - m;
             if (g0 > 0) {
                 if (g1 > 0) return false;
                 lo = Math.max(lo, g0 / (g0 - g1) - 1e-12);
             } else if (g1 > 0) {
                 hi = Math.min(hi, g0 / (g0 - g1) + 1e-12);
             }
-            // Its high face stays at or above the box's low face: cl − bh − s(q − bh) ≤ 0.
+            // Its high face stays at or above the box's low face: cl − bh − s(qh − bh) ≤ 0.
             g0 = cl - bh - m;
-            g1 = cl - q - m;
+            g1 = cl - qh - m;
             if (g0 > 0) {
                 if (g1 > 0) return false;
                 lo = Math.max(lo, g0 / (g0 - g1) - 1e-12);

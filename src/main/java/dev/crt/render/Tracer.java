@@ -351,7 +351,8 @@ final class Tracer {
             depthG = 0;
             depthB = 0;
         }
-        double s = transmittance(ox, oy, oz, ls.wx, ls.wy, ls.wz, Double.POSITIVE_INFINITY, light, -1);
+        double s = listedTransmittance(ox, oy, oz, ls.wx, ls.wy, ls.wz, Double.POSITIVE_INFINITY, light,
+                lights.kind[light] == Lights.PARALLEL);
         if (Features.ABSORPTION && absorbing) absorbed();
         return s;
     }
@@ -366,17 +367,27 @@ final class Tracer {
         double sx = qx - ox, sy = qy - oy, sz = qz - oz;
         double reach = Math.sqrt(sx * sx + sy * sy + sz * sz);
         double margin = Math.max(Math.abs(side), OFFSET * Math.max(Math.max(Math.abs(qx), Math.abs(qy)), Math.abs(qz)));
-        int list = -1;
-        if (shading != NONE && candidates != null && qx == lights.x[light] && qy == lights.y[light] && qz == lights.z[light]
-                && lights.kind[light] != Lights.PARALLEL) {
-            list = candidates.shadow(shading, light, ox, oy, oz);
-        }
-        int walks = this.walks, tested = this.tested + walker.anySteps;
-        double s = reach > margin ? transmittance(ox, oy, oz, sx / reach, sy / reach, sz / reach, reach - margin, light, list) : 1;
-        if (list < 0 && shading != NONE && candidates != null) {
-            candidates.walked(this.walks - walks, this.tested + walker.anySteps - tested);
-        }
+        double s = reach > margin ? listedTransmittance(ox, oy, oz, sx / reach, sy / reach, sz / reach, reach - margin, light,
+                qx == lights.x[light] && qy == lights.y[light] && qz == lights.z[light] && lights.kind[light] != Lights.PARALLEL)
+                : 1;
         if (Features.ABSORPTION && absorbing) absorbed();
+        return s;
+    }
+
+    /**
+     * {@link #transmittance} through the shadow list of the shape being shaded and this light, when
+     * {@code listable} (the ray aims at a point light's own point, or along a parallel light) and
+     * {@link #candidates} has one for the ray's origin; else by the walk, whose cost the list's
+     * trial is told.
+     */
+    private double listedTransmittance(double ox, double oy, double oz, double wx, double wy, double wz, double tMax, int light,
+            boolean listable) {
+        if (!listable || shading == NONE || candidates == null) return transmittance(ox, oy, oz, wx, wy, wz, tMax, light, -1);
+        int list = candidates.shadow(shading, light, ox, oy, oz);
+        if (list >= 0) return transmittance(ox, oy, oz, wx, wy, wz, tMax, light, list);
+        int walks = this.walks, tested = this.tested + walker.anySteps;
+        double s = transmittance(ox, oy, oz, wx, wy, wz, tMax, light, -1);
+        candidates.walked(this.walks - walks, this.tested + walker.anySteps - tested);
         return s;
     }
 

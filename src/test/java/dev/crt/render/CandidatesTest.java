@@ -11,6 +11,8 @@ import dev.crt.scene.Camera;
 import dev.crt.scene.CsgOperation;
 import dev.crt.scene.Entity;
 import dev.crt.scene.Material;
+import dev.crt.scene.ParallelLight;
+import dev.crt.scene.Light;
 import dev.crt.scene.Mesh;
 import dev.crt.scene.MeshData;
 import dev.crt.scene.Rgb;
@@ -163,12 +165,29 @@ class CandidatesTest {
 
     @Test
     void aShadowListGivesEachShadowRayTheFactorOfItsOwnWalkToTheBit() {
-        SplittableRandom r = new SplittableRandom(42);
+        checkShadows(new SplittableRandom(42), false);
+    }
+
+    @Test
+    void aShadowListAlongAParallelLightGivesEachShadowRayTheFactorOfItsOwnWalkToTheBit() {
+        checkShadows(new SplittableRandom(43), true);
+    }
+
+    /**
+     * Shadow rays from the surface points camera rays find in 16 random fields, each through its
+     * (shape, light) list and by its own walk: the same factor to the bit. The light is a point
+     * (on the grid or above the field) or, with {@code parallel}, a parallel light.
+     */
+    private static void checkShadows(SplittableRandom r, boolean parallel) {
         int listed = 0, partial = 0, rays = 0;
         double[] d = new double[3];
+        LightSample sample = new LightSample();
         for (int scene = 0; scene < 16; scene++) {
             Vec3 light = r.nextBoolean() ? gridPoint(r) : v(r.nextGaussian() * 8, 5 + r.nextDouble() * 10, r.nextGaussian() * 8);
-            Settings s = settings(aimed(r), List.of(point(light, rgb(1, 1, 1), 0, 0.1)), Background.BLACK, 64, 48);
+            Light source = parallel ? parallel(light, v(0, 0, 0), rgb(1, 1, 1), 0.1) : point(light, rgb(1, 1, 1), 0, 0.1);
+            Settings s = settings(aimed(r), List.of(source), Background.BLACK, 64, 48);
+            Vec3 towards = parallel ? ((ParallelLight) source).towardsLight() : null;
+            Lights lights = new Lights(s.lights());
             List<Entity> es = field(r, true);
             Tracer listing = tracer(es, s), walking = tracer(es, s);
             CameraRays camera = new CameraRays(s.camera(), 64, 48);
@@ -181,14 +200,24 @@ class CandidatesTest {
                 walking.shapes().surface(shape, walking.hit.face, walking.hit.t, walking.ray, p);
                 double delta = Tracer.OFFSET * Math.max(Math.max(Math.abs(p.px), Math.abs(p.py)),
                         Math.max(Math.abs(p.pz), walking.shapes().scale[shape]));
-                double nw = p.nx * (light.x() - p.px) + p.ny * (light.y() - p.py) + p.nz * (light.z() - p.pz);
+                double nw = parallel ? p.nx * towards.x() + p.ny * towards.y() + p.nz * towards.z()
+                        : p.nx * (light.x() - p.px) + p.ny * (light.y() - p.py) + p.nz * (light.z() - p.pz);
                 double side = nw > 0 ? delta : -delta;
                 double ox = p.px + side * p.nx, oy = p.py + side * p.ny, oz = p.pz + side * p.nz;
                 walking.shading = Tracer.NONE;
-                double lone = walking.shadowTo(ox, oy, oz, light.x(), light.y(), light.z(), side, 0);
                 listing.shading = shape;
-                boolean list = listing.candidates.shadow(shape, 0, ox, oy, oz) >= 0;
-                double fast = listing.shadowTo(ox, oy, oz, light.x(), light.y(), light.z(), side, 0);
+                double lone, fast;
+                boolean list;
+                if (parallel) {
+                    lights.sample(0, 0, p.px, p.py, p.pz, null, sample);
+                    lone = walking.shadow(sample, p.px, p.py, p.pz, p.nx, p.ny, p.nz, side, 0);
+                    list = listing.candidates.shadow(shape, 0, ox, oy, oz) >= 0;
+                    fast = listing.shadow(sample, p.px, p.py, p.pz, p.nx, p.ny, p.nz, side, 0);
+                } else {
+                    lone = walking.shadowTo(ox, oy, oz, light.x(), light.y(), light.z(), side, 0);
+                    list = listing.candidates.shadow(shape, 0, ox, oy, oz) >= 0;
+                    fast = listing.shadowTo(ox, oy, oz, light.x(), light.y(), light.z(), side, 0);
+                }
                 String what = "scene " + scene + ", ray " + k + " from shape " + shape;
                 assertThat(Double.doubleToRawLongBits(fast)).as(what).isEqualTo(Double.doubleToRawLongBits(lone));
                 assertThat(listing.shadowR).as(what).isEqualTo(walking.shadowR);
@@ -201,10 +230,12 @@ class CandidatesTest {
                 }
             }
         }
-        System.out.printf("shadow lists: %d rays, %d listed, %d partly lit%n", rays, listed, partial);
+        System.out.printf("shadow lists%s: %d rays, %d listed, %d partly lit%n", parallel ? " (parallel light)" : "", rays, listed,
+                partial);
         // The lists were taken for many rays (the others' pairs weigh more listed than walked), and
         // many of those crossed transparent casters.
-        assertThat(listed).isGreaterThan(rays / 10);
+        // (A parallel light's sweep crosses the whole field: fewer of its lists pay.)
+        assertThat(listed).isGreaterThan(rays / (parallel ? 20 : 10));
         assertThat(partial).isGreaterThan(listed / 20);
     }
 
