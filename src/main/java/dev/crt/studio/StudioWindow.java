@@ -610,6 +610,7 @@ final class StudioWindow implements StudioModel.Listener {
         if (!frame.isFocused()) e.area().requestFocus();
         e.area().requestFocusInWindow();
         SwingUtilities.invokeLater(() -> e.area().requestFocusInWindow());
+        dock.focused("script", e.area());
     }
 
     // ---------------------------------------------------------------- files
