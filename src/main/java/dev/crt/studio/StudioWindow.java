@@ -74,7 +74,7 @@ final class StudioWindow implements StudioModel.Listener {
     private final Recovery recovery;
     private final JFrame frame = new JFrame(TITLE);
     private final DockLayout dock;
-    private final JTabbedPane tabs = new JTabbedPane();
+    private final JTabbedPane tabs = new ScriptTabs();
     private final Map<ScriptDocument, ScriptEditor> editors = new HashMap<>();
     private final RenderView renderView = new RenderView();
     private final JLabel renderInfo = new JLabel("F5 renders the current script");

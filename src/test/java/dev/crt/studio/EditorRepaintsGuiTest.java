@@ -15,12 +15,12 @@ import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
 /**
- * The editor's text area repaints every visible line after a fold reparse only when the folds
- * changed (ScriptArea): a keystroke inside a line leaves the folds as they were and asks for no
- * such repaint; a new block over several lines makes a fold and is repainted whole.
+ * What a keystroke repaints: the editor's text area repaints every visible line after a fold
+ * reparse only when the folds changed (ScriptArea), and a changed tab title repaints the strip of
+ * tabs, not the script under it (ScriptTabs).
  */
 @Tag("gui")
-class ScriptAreaGuiTest {
+class EditorRepaintsGuiTest {
     private JFrame frame;
     private RepaintManager previous;
 
@@ -46,7 +46,7 @@ class ScriptAreaGuiTest {
             a.setSyntaxEditingStyle(CrtTokenMaker.STYLE);
             a.setCodeFoldingEnabled(true);
             a.setText(text);
-            frame = new JFrame("ScriptAreaGuiTest");
+            frame = new JFrame("EditorRepaintsGuiTest");
             frame.add(new org.fife.ui.rtextarea.RTextScrollPane(a));
             frame.setSize(500, 400);
             frame.setVisible(true);
@@ -85,5 +85,40 @@ class ScriptAreaGuiTest {
         onEdt(() -> wholeArea.clear());
         onEdt(() -> area.repaint());
         assertThat(onEdt(() -> List.copyOf(wholeArea))).isNotEmpty();
+    }
+
+    @Test
+    void aChangedTabTitleRepaintsTheStripOfTabsOnly() {
+        javax.swing.JPanel script = new javax.swing.JPanel();
+        ScriptTabs tabs = onEdt(() -> {
+            ScriptTabs t = new ScriptTabs();
+            t.addTab("dice.crt", script);
+            frame = new JFrame("EditorRepaintsGuiTest");
+            frame.add(t);
+            frame.setSize(500, 400);
+            frame.setVisible(true);
+            return t;
+        });
+        waitFor("the script to show", 10, () -> script.isShowing() && script.getY() > 0);
+        List<java.awt.Rectangle> dirty = new ArrayList<>();
+        onEdt(() -> {
+            previous = RepaintManager.currentManager(tabs);
+            RepaintManager.setCurrentManager(new RepaintManager() {
+                @Override
+                public void addDirtyRegion(JComponent c, int x, int y, int w, int h) {
+                    if (c == tabs) dirty.add(new java.awt.Rectangle(x, y, w, h));
+                    super.addDirtyRegion(c, x, y, w, h);
+                }
+            });
+        });
+        int strip = onEdt(() -> script.getY());
+        onEdt(() -> tabs.setTitleAt(0, "*dice.crt"));
+        assertThat(onEdt(() -> List.copyOf(dirty))).containsExactly(new java.awt.Rectangle(0, 0, onEdt(() -> tabs.getWidth()), strip));
+        assertThat(onEdt(() -> tabs.getTitleAt(0))).isEqualTo("*dice.crt");
+        waitFor("the longer title laid out", 10, () -> tabs.getBoundsAt(0).width > 0 && tabs.getBoundsAt(0).y + tabs.getBoundsAt(0).height <= strip);
+        // Any other repaint of the tabbed pane is whole, as before.
+        onEdt(() -> dirty.clear());
+        onEdt(() -> tabs.repaint());
+        assertThat(onEdt(() -> List.copyOf(dirty))).containsExactly(new java.awt.Rectangle(0, 0, onEdt(() -> tabs.getWidth()), onEdt(() -> tabs.getHeight())));
     }
 }
