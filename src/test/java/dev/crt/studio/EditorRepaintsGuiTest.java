@@ -113,12 +113,14 @@ class EditorRepaintsGuiTest {
         });
         int strip = onEdt(() -> script.getY());
         onEdt(() -> tabs.setTitleAt(0, "*dice.crt"));
-        assertThat(onEdt(() -> List.copyOf(dirty))).containsExactly(new java.awt.Rectangle(0, 0, onEdt(() -> tabs.getWidth()), strip));
+        // The strip, and nothing below it (the tab itself may ask for its own rectangle too: rollover, selection).
+        assertThat(onEdt(() -> List.copyOf(dirty))).contains(new java.awt.Rectangle(0, 0, onEdt(() -> tabs.getWidth()), strip))
+                .allSatisfy(r -> assertThat(r.y + r.height).isLessThanOrEqualTo(strip));
         assertThat(onEdt(() -> tabs.getTitleAt(0))).isEqualTo("*dice.crt");
         waitFor("the longer title laid out", 10, () -> tabs.getBoundsAt(0).width > 0 && tabs.getBoundsAt(0).y + tabs.getBoundsAt(0).height <= strip);
         // Any other repaint of the tabbed pane is whole, as before.
         onEdt(() -> dirty.clear());
         onEdt(() -> tabs.repaint());
-        assertThat(onEdt(() -> List.copyOf(dirty))).containsExactly(new java.awt.Rectangle(0, 0, onEdt(() -> tabs.getWidth()), onEdt(() -> tabs.getHeight())));
+        assertThat(onEdt(() -> List.copyOf(dirty))).contains(new java.awt.Rectangle(0, 0, onEdt(() -> tabs.getWidth()), onEdt(() -> tabs.getHeight())));
     }
 }
