@@ -1,13 +1,16 @@
 #!/usr/bin/env bash
 # The studio's speed figures (docs/studio.md): start to a painted window with ./crt studio, then
 # keystroke to squiggle on 2,500 lines and F5 to first picture per example scene (StudioBench).
-# Runs on a virtual X display of its own. Needs Xvfb. An argument names another folder of scenes
-# for the F5 figures (an empty one measures the editor only).
+# Runs on a virtual X display of its own (CRT_BENCH_DISPLAY=N picks its number). Needs Xvfb. An
+# argument names another folder of scenes for the F5 figures (an empty one measures the editor only).
+# Last, the typing figure of issue 7 (no EDT stall over 50 ms while typing): CRT_BENCH_TYPING_RUNS
+# studios (5 unless set) each type five keystrokes into 2,500 lines, and the longest stall of each is
+# printed on one line, with how many were under 50 ms and the load average (measure on a quiet machine).
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$here"
-display=""
-for n in $(seq 200 249); do
+display="${CRT_BENCH_DISPLAY:-}"
+for n in $( [ -z "$display" ] && seq 200 249); do
   if [ ! -e "/tmp/.X11-unix/X$n" ] && [ ! -e "/tmp/.X$n-lock" ]; then display=$n; break; fi
 done
 work="$(mktemp -d)"
@@ -63,3 +66,17 @@ else
 fi
 "$java_bin" "${opts[@]}" -Dcrt.assets="$here/assets" -Djava.util.prefs.userRoot="$work/p" \
   -cp "$here/target/crt.jar:$here/target/test-classes" dev.crt.studio.StudioBench "${1:-scenes}"
+
+mkdir -p "$work/none"
+runs="${CRT_BENCH_TYPING_RUNS:-5}"
+stalls=() under=0 loads=()
+for i in $(seq 1 "$runs"); do
+  loads+=("$(cut -d' ' -f1 /proc/loadavg)")
+  ms=$("$java_bin" "${opts[@]}" -Djava.util.prefs.userRoot="$work/p" \
+    -cp "$here/target/crt.jar:$here/target/test-classes" dev.crt.studio.StudioBench "$work/none" \
+    | sed -n 's/^TYPING STALL \([0-9]*\) ms.*/\1/p')
+  stalls+=("${ms:-?}")
+  [ -n "$ms" ] && [ "$ms" -lt 50 ] && under=$((under + 1))
+done
+echo "TYPING STALLS (longest EDT stall during five keystrokes into 2,500 lines, $runs studios): ${stalls[*]} ms;" \
+  "$under of $runs under 50 ms; load average at each start: ${loads[*]}"

@@ -74,7 +74,21 @@ final class BraceFoldParser implements FoldParser {
             // The text was read from the document itself a moment ago: every offset in it exists.
             throw new IllegalStateException(e);
         }
+        if (area instanceof ScriptArea script && same(folds, area.getFoldManager())) script.foldsUnchanged();
         return folds;
+    }
+
+    /** Whether {@code folds} span what the fold manager's folds span, nesting included. */
+    private static boolean same(List<Fold> folds, org.fife.ui.rsyntaxtextarea.folding.FoldManager held) {
+        if (held.getFoldCount() != folds.size()) return false;
+        for (int i = 0; i < folds.size(); i++) if (!same(folds.get(i), held.getFold(i))) return false;
+        return true;
+    }
+
+    private static boolean same(Fold a, Fold b) {
+        if (a.getStartOffset() != b.getStartOffset() || a.getEndOffset() != b.getEndOffset() || a.getChildCount() != b.getChildCount()) return false;
+        for (int i = 0; i < a.getChildCount(); i++) if (!same(a.getChild(i), b.getChild(i))) return false;
+        return true;
     }
 
     /** Makes the folds of the open blocks 0..{@code top} that have none yet, outermost first. */

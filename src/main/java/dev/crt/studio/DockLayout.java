@@ -91,6 +91,25 @@ final class DockLayout {
         return null;
     }
 
+    /**
+     * Tells the docking library that panel {@code id} is the focused one, with {@code component}
+     * holding the focus, and asks for no focus itself. The library keeps its own idea of the
+     * focused panel (the last one shown or clicked) and makes sure the keyboard focus is inside it:
+     * while it thought another panel focused, it asked twenty times, every 10 ms, for the focus of
+     * that panel or of the window (clearing the editor's each time), and the studio gave it back to
+     * the editor: a focus trade per request, each an X server round trip and a repaint of the whole
+     * editor, while the user typed (docs/studio.md, "EDT stalls while typing"). Told here, its
+     * pending requests are dropped and its checks find the focus where it expects it.
+     */
+    void focused(String id, java.awt.Component component) {
+        DefaultSingleCDockable d = dockables.get(id);
+        if (d == null) return;
+        var controller = control.getController();
+        if (controller.getFocusedDockable() == d.intern()) return;
+        // force: replace what the library thinks; no ensuring: the studio asks for the focus itself.
+        controller.setFocusedDockable(d.intern(), component, true, false, false);
+    }
+
     /** Puts every panel where its registration says. */
     void resetLayout() {
         CGrid grid = new CGrid(control);

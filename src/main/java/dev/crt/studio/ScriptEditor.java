@@ -56,7 +56,7 @@ final class ScriptEditor extends JPanel implements ScriptDocument.Listener {
     ScriptEditor(ScriptDocument document) {
         super(new BorderLayout());
         this.document = document;
-        area = new RSyntaxTextArea(30, 80);
+        area = new ScriptArea(30, 80);
         area.setDocument(document.text());
         area.setSyntaxEditingStyle(CrtTokenMaker.STYLE);
         area.setCodeFoldingEnabled(true);

@@ -74,7 +74,7 @@ final class StudioWindow implements StudioModel.Listener {
     private final Recovery recovery;
     private final JFrame frame = new JFrame(TITLE);
     private final DockLayout dock;
-    private final JTabbedPane tabs = new JTabbedPane();
+    private final JTabbedPane tabs = new ScriptTabs();
     private final Map<ScriptDocument, ScriptEditor> editors = new HashMap<>();
     private final RenderView renderView = new RenderView();
     private final JLabel renderInfo = new JLabel("F5 renders the current script");
@@ -236,6 +236,24 @@ final class StudioWindow implements StudioModel.Listener {
         openAll(files);
         if (model.documents().isEmpty()) newDocument();
         focusEditor();
+        // With no window manager the X server's focus can arrive after the editor asked for it, and
+        // the request is lost, or be cleared by the docking library's last request made before it
+        // was told the Script panel is focused (DockLayout.focused). The library used to ask again
+        // and again for the window's focus, and the studio handed it to the editor each time; now
+        // it asks nothing, so for the first seconds the studio asks again itself whenever the focus
+        // is nowhere or on the bare window, until the editor has held it for half a second (3 s at
+        // most), and never after: no later dialog can lose a click to it.
+        int[] ticks = {0, 0};
+        Timer startFocus = new Timer(50, null);
+        startFocus.addActionListener(e -> {
+            ScriptEditor editor = currentEditor();
+            java.awt.Component owner = java.awt.KeyboardFocusManager.getCurrentKeyboardFocusManager().getFocusOwner();
+            boolean held = editor != null && owner == editor.area();
+            ticks[1] = held ? ticks[1] + 1 : 0;
+            if (editor == null || ticks[1] >= 10 || ++ticks[0] > 60) startFocus.stop();
+            else if (!held && (owner == null || owner == frame || owner == frame.getRootPane())) focusEditor();
+        });
+        startFocus.start();
     }
 
     /**
@@ -610,6 +628,7 @@ final class StudioWindow implements StudioModel.Listener {
         if (!frame.isFocused()) e.area().requestFocus();
         e.area().requestFocusInWindow();
         SwingUtilities.invokeLater(() -> e.area().requestFocusInWindow());
+        dock.focused("script", e.area());
     }
 
     // ---------------------------------------------------------------- files

@@ -122,10 +122,33 @@ final class EdtProfile extends EventQueue {
                 int end = what.indexOf(',');
                 if (end >= 0) what = what.substring(0, end);
                 what = what.replaceAll("/0x[0-9a-f]+", "").replaceAll("@[0-9a-f]+$", "");
+                if (what.startsWith("javax.swing.Timer$DoPostEvent")) what += timerListeners(event);
                 return "invocation " + what;
             }
         }
         return name + " " + event.getID();
+    }
+
+    /**
+     * Whose timer fired: the classes of its listeners, when the JVM lets the profile look into the
+     * event ({@code --add-opens java.desktop/java.awt.event=ALL-UNNAMED --add-opens java.desktop/javax.swing=ALL-UNNAMED}).
+     */
+    private static String timerListeners(AWTEvent event) {
+        try {
+            java.lang.reflect.Field runnable = InvocationEvent.class.getDeclaredField("runnable");
+            runnable.setAccessible(true);
+            Object post = runnable.get(event);
+            java.lang.reflect.Field outer = post.getClass().getDeclaredField("this$0");
+            outer.setAccessible(true);
+            javax.swing.Timer timer = (javax.swing.Timer) outer.get(post);
+            StringBuilder b = new StringBuilder(" [");
+            for (java.awt.event.ActionListener l : timer.getActionListeners()) {
+                b.append(l.getClass().getName().replaceAll("/0x[0-9a-f]+", "").replaceAll("\\$\\$Lambda.*", "\\$\\$Lambda")).append(' ');
+            }
+            return b.append(']').toString();
+        } catch (ReflectiveOperationException | RuntimeException e) {
+            return "";
+        }
     }
 
     /** Stops counting and prints the totals per kind (the largest first) and every long event, on the EDT. */

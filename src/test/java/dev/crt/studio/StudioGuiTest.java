@@ -123,9 +123,19 @@ class StudioGuiTest {
         assertThat(onEdt(() -> area().getText())).isEqualTo(Files.readString(file));
         assertThat(onEdt(() -> area().getAccessibleContext().getAccessibleName())).startsWith("Script editor");
         assertThat(onEdt(() -> studio.renderView().getAccessibleContext().getAccessibleName())).isEqualTo("Render view");
+        // The docking library knows the Script panel holds the focus, so it asks for none itself:
+        // while it thought another panel focused, it took the focus from the editor, which took it
+        // back, a dozen times in the first seconds of typing (docs/studio.md, "EDT stalls while typing").
+        assertThat(onEdt(() -> studio.dock().control().getController().getFocusedDockable()))
+                .isSameAs(onEdt(() -> studio.dock().dockable("script").intern()));
+        int[] focusChanges = {0};
+        java.beans.PropertyChangeListener count = e -> focusChanges[0]++;
+        onEdt(() -> java.awt.KeyboardFocusManager.getCurrentKeyboardFocusManager().addPropertyChangeListener("focusOwner", count));
         caretAtEnd();
         keys.type("x = 1");
         assertThat(onEdt(() -> studio.frame().getTitle())).startsWith("*two-spheres.crt");
+        onEdt(() -> java.awt.KeyboardFocusManager.getCurrentKeyboardFocusManager().removePropertyChangeListener("focusOwner", count));
+        assertThat(onEdt(() -> focusChanges[0])).as("focus changes while typing").isZero();
     }
 
     @Test
