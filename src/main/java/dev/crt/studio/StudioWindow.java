@@ -228,6 +228,7 @@ final class StudioWindow implements StudioModel.Listener {
 
     /** Shows the window, offers to recover unsaved work of a studio that died, and opens {@code files}. */
     void show(List<Path> files) {
+        LibraryClasses.preload();
         frame.setVisible(true);
         // The X input method opens on the first key press and reads the locale's compose tables
         // meanwhile (0.1 s, over 1 s on a loaded machine, on the EDT): open it now, not on the first key.
