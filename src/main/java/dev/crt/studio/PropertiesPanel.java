@@ -102,7 +102,7 @@ final class PropertiesPanel extends JPanel {
     org.openide.nodes.Node sheetNode(Node node, SourceMap sourceMap) {
         shown = node;
         map = sourceMap;
-        return node == null || sourceMap == null ? null : new ObjectNode(node);
+        return node == null || sourceMap == null ? null : new ObjectNode(node, sourceMap);
     }
 
     /** Says what happened to the last edit: done (plain) or refused (in red). */
@@ -127,10 +127,16 @@ final class PropertiesPanel extends JPanel {
 
     private final class ObjectNode extends AbstractNode {
         private final Node node;
+        /**
+         * The compile the node was made from: the sheet builds its rows later, on the library's
+         * own thread, by when the panel may already show another compile or nothing.
+         */
+        private final SourceMap map;
 
-        ObjectNode(Node node) {
+        ObjectNode(Node node, SourceMap map) {
             super(Children.LEAF);
             this.node = node;
+            this.map = map;
             setName(node.label());
             setDisplayName(node.label());
         }
@@ -159,7 +165,7 @@ final class PropertiesPanel extends JPanel {
             Map<String, ObjectInfo> where = new LinkedHashMap<>();
             for (ObjectInfo block : map.settings()) for (String a : block.attributes().keySet()) where.put(a, block);
             ObjectInfo last = map.settings().get(map.settings().size() - 1);
-            for (Spec spec : PropertyTypes.of("Settings").values()) set.put(property(where.getOrDefault(spec.name(), last), null, spec));
+            for (Spec spec : PropertyTypes.of("Settings").values()) set.put(property(map, where.getOrDefault(spec.name(), last), null, spec));
         }
 
         private void call(Sheet.Set set, MacroCall call) {
@@ -190,7 +196,7 @@ final class PropertiesPanel extends JPanel {
             Map<String, Spec> specs = PropertyTypes.of(info.type());
             for (Spec spec : specs.values()) {
                 if (spec.type() == Type.MATERIAL) material(s, info, call);
-                else main.put(property(info, call, spec));
+                else main.put(property(map, info, call, spec));
             }
             for (Map.Entry<String, Expr> e : info.attributes().entrySet()) {
                 if (!specs.containsKey(e.getKey())) main.put(text(e.getKey(), e.getValue().text(), "Written in the script"));
@@ -211,7 +217,7 @@ final class PropertiesPanel extends JPanel {
                 return;
             }
             for (Spec spec : PropertyTypes.of("Material").values()) {
-                if (info != null) set.put(property(info, call, spec));
+                if (info != null) set.put(property(map, info, call, spec));
                 else set.put(defaultMaterial(entity, call, spec));
             }
         }
@@ -223,8 +229,11 @@ final class PropertiesPanel extends JPanel {
         }
     }
 
-    /** One attribute of {@code info}: editable when the script lets it be rewritten as a literal, else read-only text. */
-    private org.openide.nodes.Node.Property<?> property(ObjectInfo info, MacroCall call, Spec spec) {
+    /**
+     * One attribute of {@code info}, of the compile {@code map} describes: editable when the script
+     * lets it be rewritten as a literal, else read-only text.
+     */
+    private org.openide.nodes.Node.Property<?> property(SourceMap map, ObjectInfo info, MacroCall call, Spec spec) {
         Expr e = info.attributes().get(spec.name());
         String name = spec.name();
         if (spec.type() == Type.OTHER || spec.type() == Type.MATERIAL) {
