@@ -5,7 +5,8 @@
 # argument names another folder of scenes for the F5 figures (an empty one measures the editor only).
 # Last, the typing figure of issue 7 (no EDT stall over 50 ms while typing): CRT_BENCH_TYPING_RUNS
 # studios (5 unless set) each type five keystrokes into 2,500 lines, and the longest stall of each is
-# printed on one line, with how many were under 50 ms and the load average (measure on a quiet machine).
+# printed on one line, with how many were under 50 ms and the load average (measure on a quiet machine);
+# each studio's output, with the EDT's stack during every stall over 50 ms, is kept in target/studio-bench/.
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$here"
@@ -69,14 +70,19 @@ fi
 
 mkdir -p "$work/none"
 runs="${CRT_BENCH_TYPING_RUNS:-5}"
+# Each studio's output is kept, with the EDT's stack during every stall over 50 ms: what is left to fix.
+logs="$here/target/studio-bench"
+mkdir -p "$logs"
+rm -f "$logs"/typing-*.log
 stalls=() under=0 loads=()
 for i in $(seq 1 "$runs"); do
   loads+=("$(cut -d' ' -f1 /proc/loadavg)")
-  ms=$("$java_bin" "${opts[@]}" -Djava.util.prefs.userRoot="$work/p" \
-    -cp "$here/target/crt.jar:$here/target/test-classes" dev.crt.studio.StudioBench "$work/none" \
-    | sed -n 's/^TYPING STALL \([0-9]*\) ms.*/\1/p')
+  "$java_bin" "${opts[@]}" -Djava.util.prefs.userRoot="$work/p" -Dcrt.watchdog.printMs=50 -Dcrt.watchdog.frames=30 \
+    -cp "$here/target/crt.jar:$here/target/test-classes" dev.crt.studio.StudioBench "$work/none" >"$logs/typing-$i.log" 2>&1 || true
+  ms=$(sed -n 's/^TYPING STALL \([0-9]*\) ms.*/\1/p' "$logs/typing-$i.log")
   stalls+=("${ms:-?}")
   [ -n "$ms" ] && [ "$ms" -lt 50 ] && under=$((under + 1))
 done
 echo "TYPING STALLS (longest EDT stall during five keystrokes into 2,500 lines, $runs studios): ${stalls[*]} ms;" \
   "$under of $runs under 50 ms; load average at each start: ${loads[*]}"
+echo "each studio's output, with the EDT's stack during any stall over 50 ms: $logs/typing-N.log"
