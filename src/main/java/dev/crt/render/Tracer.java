@@ -560,7 +560,7 @@ final class Tracer {
         if (!walk.start(bvh, ray, 0, tMax)) return product;
         for (int leaf = walk.nextAny(tMax); leaf != BvhWalker.END; leaf = walk.nextAny(tMax)) {
             for (int k = Bvh.leafFirst(leaf), end = k + Bvh.leafCount(leaf); k < end; k++) {
-                tested += items[k] < 0 ? Candidates.HEAVY : 1;
+                tested += candidates.weight(items[k]);
                 product *= itemTransmittance(items[k], tMax);
                 if (product == 0) return blockedBy(light, items[k]);
             }
