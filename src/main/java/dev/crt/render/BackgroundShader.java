@@ -156,14 +156,17 @@ final class BackgroundShader {
      * [x, x+1)/width × [y, y+1)/height, so its centre sits at ((x + 0.5)/width, (y + 0.5)/height).
      */
     private void panorama(double dx, double dy, double dz, double[] out) {
-        double len = Math.sqrt(dx * dx + dy * dy + dz * dz);
         double u = 0.5 + (Atan.atan2(dx, dz) + angle) / (2 * Math.PI);
         u -= Math.floor(u);
-        double v = 0.5 - Atan.asin(dy / len) / Math.PI;
+        // asin(d.y/|d|) is the elevation atan2(d.y, √(d.x² + d.z²)): one square root, no clamp.
+        double v = 0.5 - Atan.atan2(dy, Math.sqrt(dx * dx + dz * dz)) / Math.PI;
         double x = u * texWidth - 0.5, y = v * texHeight - 0.5;
         double fx = Math.floor(x), fy = Math.floor(y);
         double ax = x - fx, ay = y - fy;
-        int x0 = Math.floorMod((int) fx, texWidth), x1 = (x0 + 1) % texWidth;
+        // u is in [0, 1], so fx in [−1, width − 1]: the wrap without an integer division.
+        int x0 = (int) fx, x1 = x0 + 1;
+        if (x0 < 0) x0 += texWidth;
+        if (x1 == texWidth) x1 = 0;
         int y0 = clamp((int) fy, texHeight), y1 = clamp((int) fy + 1, texHeight);
         bilinear(x0, x1, y0, y1, ax, ay, out);
     }
