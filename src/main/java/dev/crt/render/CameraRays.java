@@ -127,19 +127,27 @@ final class CameraRays {
     }
 
     /**
-     * Turns the pinhole direction {@code d} into the thin-lens ray through lens point (lx, ly):
-     * origin into {@code o[0..2]}, direction into {@code d[0..2]}.
+     * The thin-lens ray of sample (sx, sy) of pixel (i, j) through lens point (lx, ly): origin into
+     * {@code o[0..2]}, unit direction into {@code d[0..2]}. The ray aims at the point where the
+     * pinhole ray meets the plane in focus, P + D·F/(D·f): with the lens offset L = O − P, its
+     * direction is D·F/(D·f) − L, or D − L·(D·f)/F scaled by (D·f)/F. So D need not be a unit
+     * vector (one normalisation, not two), and the point in focus is never formed (it overflows
+     * when the focal distance is near the largest double).
      */
-    void throughLens(double lx, double ly, double[] o, double[] d) {
-        double k = focalDistance / (d[0] * fx + d[1] * fy + d[2] * fz);
+    void throughLens(int i, int j, double sx, double sy, double lx, double ly, double[] o, double[] d) {
+        double x = 2 * (i + sx) / width - 1;
+        double y = 1 - 2 * (j + sy) / height;
+        double a = x * halfHeight * aspect, b = y * halfHeight;
+        double dx = fx + a * rx + b * ux, dy = fy + a * ry + b * uy, dz = fz + a * rz + b * uz;
+        double t = (dx * fx + dy * fy + dz * fz) / focalDistance;
         double ox = lensRadius * (lx * rx + ly * ux), oy = lensRadius * (lx * ry + ly * uy),
                 oz = lensRadius * (lx * rz + ly * uz);
         o[0] = px + ox;
         o[1] = py + oy;
         o[2] = pz + oz;
-        // F − O = d·k − (O − P), scaled by 1/k: the same direction, without forming the point in
-        // focus, which overflows when the focal distance is near the largest double.
-        double dx = d[0] - ox / k, dy = d[1] - oy / k, dz = d[2] - oz / k;
+        dx -= ox * t;
+        dy -= oy * t;
+        dz -= oz * t;
         double inv = 1 / Math.sqrt(dx * dx + dy * dy + dz * dz);
         d[0] = dx * inv;
         d[1] = dy * inv;

@@ -294,9 +294,8 @@ final class PixelSampler {
     }
 
     private void traceThroughLens(int i, int j, double sx, double sy, double u1, double u2, double u3, double w) {
-        camera.direction(i, j, sx, sy, direction);
         camera.aperture.sample(u1, u2, u3, lens);
-        camera.throughLens(lens[0], lens[1], origin, direction);
+        camera.throughLens(i, j, sx, sy, lens[0], lens[1], origin, direction);
         tracer.primaryRays++;
         if (blocks) tracer.blockRay = tracer.candidates.block(camera, i, j);
         if (Features.TEXTURES && tracer.footprints) tracer.spread = camera.spread(direction) * spreadShare;

@@ -27,14 +27,34 @@ class CameraAndBackgroundTest {
         Vec3 dir0 = new Vec3(d0[0], d0[1], d0[2]);
         Vec3 focus = c.position().plus(dir0.times(4.5 / dir0.dot(f)));
         for (int k = 0; k < 200; k++) {
-            System.arraycopy(d0, 0, d, 0, 3);
             cam.aperture.sample(rnd.next(), rnd.next(), rnd.next(), lens);
-            cam.throughLens(lens[0], lens[1], o, d);
+            cam.throughLens(5, 7, 0.5, 0.5, lens[0], lens[1], o, d);
             Vec3 origin = new Vec3(o[0], o[1], o[2]), dir = new Vec3(d[0], d[1], d[2]);
             assertThat(origin.minus(c.position()).length()).isLessThanOrEqualTo(0.25 + 1e-12);
             assertThat(focus.minus(origin).cross(dir).length()).isLessThan(1e-12);
             assertThat(Math.abs(origin.minus(c.position()).dot(f))).isLessThan(1e-12);
         }
+    }
+
+    @Test
+    void discPointsAreAtTheLibrarysAngleToTheLastBits() {
+        // The disc's point is √u1·(cos 2πu2, sin 2πu2), its cosine and sine by a quarter turn and
+        // polynomials: within 2e-15 of the library's (whose 2π·u2 is itself rounded), the quarter turns' edges included.
+        ApertureSampler s = new ApertureSampler(ApertureShape.CIRCLE);
+        SplittableRandom r = new SplittableRandom(3);
+        double[] p = new double[2];
+        for (int k = 0; k < 400_000; k++) {
+            double u1 = r.nextDouble(), u2 = k % 4 == 0 ? Math.min(Math.nextDown(1.0), Math.max(0, (k / 4 % 9) / 8.0 + r.nextDouble(-1e-9, 1e-9)))
+                    : r.nextDouble();
+            s.sample(u1, u2, 0, p);
+            double a = 2 * Math.PI * u2, rad = Math.sqrt(u1);
+            assertThat(p[0]).as("u2 = %s", u2).isCloseTo(rad * Math.cos(a), within(2e-15));
+            assertThat(p[1]).as("u2 = %s", u2).isCloseTo(rad * Math.sin(a), within(2e-15));
+        }
+        s.sample(1, 0, 0, p);
+        assertThat(p).containsExactly(1, 0);
+        s.sample(1, 0.25, 0, p);
+        assertThat(p).containsExactly(0, 1);
     }
 
     @Test
@@ -168,8 +188,7 @@ class CameraAndBackgroundTest {
         double[] d0 = new double[3], o = new double[3], d = new double[3];
         for (int i = 0; i < 64; i += 9) {
             cam.direction(i, 40, 0.5, 0.5, d0);
-            System.arraycopy(d0, 0, d, 0, 3);
-            cam.throughLens(0.6, -0.7, o, d);
+            cam.throughLens(i, 40, 0.5, 0.5, 0.6, -0.7, o, d);
             assertThat(d).containsExactly(d0, within(1e-12));
             assertThat(new Vec3(o[0], o[1], o[2]).minus(c.position()).length()).isCloseTo(0.25 * Math.hypot(0.6, 0.7), within(1e-12));
         }
