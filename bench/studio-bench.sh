@@ -56,14 +56,21 @@ done
 # then in the cache, as they are for users.
 java_bin="$(bash -c 'source <(sed -n "/^java_version()/,/^fi$/p" "$1"); echo "$java"' _ "$here/crt")"
 opts=(-Xss16m)
+# and its garbage collector: the launcher's studio options (CRT_STUDIO_GC=g1 keeps G1, as for ./crt studio).
+eval "$(grep '^studio_gc=' "$here/crt")"
+collector=G1
+if [ "${CRT_STUDIO_GC:-}" != g1 ] && "$java_bin" "${studio_gc[@]}" -version >/dev/null 2>&1; then
+  opts+=("${studio_gc[@]}")
+  collector="${studio_gc[*]}"
+fi
 if [ -n "$version_cache" ] && [ "${version_cache##*.}" = aot ] && [ -f "$studio_cache" ]; then
   opts+=(-XX:AOTCache="$studio_cache" -Xlog:aot=off -Xlog:cds=off --enable-native-access=ALL-UNNAMED --sun-misc-unsafe-memory-access=allow)
-  echo "editor and render figures: $("$java_bin" -version 2>&1 | head -1), with the studio's start-up cache"
+  echo "editor and render figures: $("$java_bin" -version 2>&1 | head -1), collector $collector, with the studio's start-up cache"
 elif [ -n "$version_cache" ] && [ -f "$studio_cache" ]; then
   opts+=(-XX:SharedArchiveFile="$studio_cache" -Xshare:auto -Xlog:cds=off)
-  echo "editor and render figures: $("$java_bin" -version 2>&1 | head -1), with the studio's class-data archive"
+  echo "editor and render figures: $("$java_bin" -version 2>&1 | head -1), collector $collector, with the studio's class-data archive"
 else
-  echo "editor and render figures: $("$java_bin" -version 2>&1 | head -1), no start-up cache"
+  echo "editor and render figures: $("$java_bin" -version 2>&1 | head -1), collector $collector, no start-up cache"
 fi
 "$java_bin" "${opts[@]}" -Dcrt.assets="$here/assets" -Djava.util.prefs.userRoot="$work/p" \
   -cp "$here/target/crt.jar:$here/target/test-classes" dev.crt.studio.StudioBench "${1:-scenes}"
@@ -84,5 +91,5 @@ for i in $(seq 1 "$runs"); do
   [ -n "$ms" ] && [ "$ms" -lt 50 ] && under=$((under + 1))
 done
 echo "TYPING STALLS (longest EDT stall during five keystrokes into 2,500 lines, $runs studios): ${stalls[*]} ms;" \
-  "$under of $runs under 50 ms; load average at each start: ${loads[*]}"
+  "$under of $runs under 50 ms; collector $collector (its pauses count as stalls); load average at each start: ${loads[*]}"
 echo "each studio's output, with the EDT's stack during any stall over 50 ms: $logs/typing-N.log"
