@@ -24,7 +24,10 @@ mvn -B -q -o -DskipTests package test-compile >/dev/null
 ./crt --version >/dev/null   # builds the class-data archive if needed
 
 # The studio's own start-up cache is made in the background by the first `crt studio`; wait for it.
-version_cache=$(ls target/crt-*.aot target/crt-*.jsa 2>/dev/null | grep -v studio | head -1 || true)
+# The launcher's Java and its cache (the first cache listed could be another Java's, left by a run with CRT_JAVA).
+IFS='|' read -r java_bin java_version < <(bash -c 'source <(sed -n "/^java_version()/,/^fi$/p" "$1"); echo "$java|$version"' _ "$here/crt")
+if [ "${java_version%%.*}" -ge 25 ] 2>/dev/null; then version_cache="target/crt-$java_version.aot"; else version_cache="target/crt-${java_version:-java}.jsa"; fi
+[ -f "$version_cache" ] || version_cache=""
 if [ -n "$version_cache" ]; then
   studio_cache="${version_cache%.*}-studio.${version_cache##*.}"
   if [ ! -f "$studio_cache" ] || [ "$studio_cache" -ot target/crt.jar ]; then
@@ -54,7 +57,6 @@ done
 # Java 24 and later the studio's start-up cache (the bench's own classes come after the jar on the class
 # path, which the cache allows); the classes a first error notice or the first property sheet need are
 # then in the cache, as they are for users.
-java_bin="$(bash -c 'source <(sed -n "/^java_version()/,/^fi$/p" "$1"); echo "$java"' _ "$here/crt")"
 opts=(-Xss16m)
 # and its garbage collector: the launcher's studio options (CRT_STUDIO_GC=g1 keeps G1, as for ./crt studio).
 eval "$(grep '^studio_gc=' "$here/crt")"
