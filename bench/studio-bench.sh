@@ -24,7 +24,10 @@ mvn -B -q -o -DskipTests package test-compile >/dev/null
 ./crt --version >/dev/null   # builds the class-data archive if needed
 
 # The studio's own start-up cache is made in the background by the first `crt studio`; wait for it.
-version_cache=$(ls target/crt-*.aot target/crt-*.jsa 2>/dev/null | grep -v studio | head -1 || true)
+# The launcher's Java and its cache (the first cache listed could be another Java's, left by a run with CRT_JAVA).
+IFS='|' read -r java_bin java_version < <(bash -c 'source <(sed -n "/^java_version()/,/^fi$/p" "$1"); echo "$java|$version"' _ "$here/crt")
+if [ "${java_version%%.*}" -ge 25 ] 2>/dev/null; then version_cache="target/crt-$java_version.aot"; else version_cache="target/crt-${java_version:-java}.jsa"; fi
+[ -f "$version_cache" ] || version_cache=""
 if [ -n "$version_cache" ]; then
   studio_cache="${version_cache%.*}-studio.${version_cache##*.}"
   if [ ! -f "$studio_cache" ] || [ "$studio_cache" -ot target/crt.jar ]; then
@@ -54,16 +57,22 @@ done
 # Java 24 and later the studio's start-up cache (the bench's own classes come after the jar on the class
 # path, which the cache allows); the classes a first error notice or the first property sheet need are
 # then in the cache, as they are for users.
-java_bin="$(bash -c 'source <(sed -n "/^java_version()/,/^fi$/p" "$1"); echo "$java"' _ "$here/crt")"
 opts=(-Xss16m)
+# and its garbage collector: the launcher's studio options (CRT_STUDIO_GC=g1 keeps G1, as for ./crt studio).
+eval "$(grep '^studio_gc=' "$here/crt")"
+collector=G1
+if [ "${CRT_STUDIO_GC:-}" != g1 ] && "$java_bin" "${studio_gc[@]}" -version >/dev/null 2>&1; then
+  opts+=("${studio_gc[@]}")
+  collector="${studio_gc[*]}"
+fi
 if [ -n "$version_cache" ] && [ "${version_cache##*.}" = aot ] && [ -f "$studio_cache" ]; then
   opts+=(-XX:AOTCache="$studio_cache" -Xlog:aot=off -Xlog:cds=off --enable-native-access=ALL-UNNAMED --sun-misc-unsafe-memory-access=allow)
-  echo "editor and render figures: $("$java_bin" -version 2>&1 | head -1), with the studio's start-up cache"
+  echo "editor and render figures: $("$java_bin" -version 2>&1 | head -1), collector $collector, with the studio's start-up cache"
 elif [ -n "$version_cache" ] && [ -f "$studio_cache" ]; then
   opts+=(-XX:SharedArchiveFile="$studio_cache" -Xshare:auto -Xlog:cds=off)
-  echo "editor and render figures: $("$java_bin" -version 2>&1 | head -1), with the studio's class-data archive"
+  echo "editor and render figures: $("$java_bin" -version 2>&1 | head -1), collector $collector, with the studio's class-data archive"
 else
-  echo "editor and render figures: $("$java_bin" -version 2>&1 | head -1), no start-up cache"
+  echo "editor and render figures: $("$java_bin" -version 2>&1 | head -1), collector $collector, no start-up cache"
 fi
 "$java_bin" "${opts[@]}" -Dcrt.assets="$here/assets" -Djava.util.prefs.userRoot="$work/p" \
   -cp "$here/target/crt.jar:$here/target/test-classes" dev.crt.studio.StudioBench "${1:-scenes}"
@@ -84,5 +93,5 @@ for i in $(seq 1 "$runs"); do
   [ -n "$ms" ] && [ "$ms" -lt 50 ] && under=$((under + 1))
 done
 echo "TYPING STALLS (longest EDT stall during five keystrokes into 2,500 lines, $runs studios): ${stalls[*]} ms;" \
-  "$under of $runs under 50 ms; load average at each start: ${loads[*]}"
+  "$under of $runs under 50 ms; collector $collector (its pauses count as stalls); load average at each start: ${loads[*]}"
 echo "each studio's output, with the EDT's stack during any stall over 50 ms: $logs/typing-N.log"

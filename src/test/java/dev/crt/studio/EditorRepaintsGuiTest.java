@@ -16,8 +16,8 @@ import org.junit.jupiter.api.Test;
 
 /**
  * What a keystroke repaints: the editor's text area repaints every visible line after a fold
- * reparse only when the folds changed (ScriptArea), and a changed tab title repaints the strip of
- * tabs, not the script under it (ScriptTabs).
+ * reparse only when the folds changed, and for text typed at a line's start only that line
+ * (ScriptArea); a changed tab title repaints the strip of tabs, not the script under it (ScriptTabs).
  */
 @Tag("gui")
 class EditorRepaintsGuiTest {
@@ -84,6 +84,57 @@ class EditorRepaintsGuiTest {
         // Nothing stays marked: a repaint asked for afterwards goes through.
         onEdt(() -> wholeArea.clear());
         onEdt(() -> area.repaint());
+        assertThat(onEdt(() -> List.copyOf(wholeArea))).isNotEmpty();
+    }
+
+    @Test
+    void aCharacterTypedAtTheStartOfALineRepaintsThatLineOnly() {
+        String text = "a = 1\nb = 2\nScene { Sphere { } }\n";
+        ScriptArea area = onEdt(() -> {
+            CrtTokenMaker.register();
+            ScriptArea a = new ScriptArea(20, 60);
+            a.setSyntaxEditingStyle(CrtTokenMaker.STYLE);
+            a.setText(text);
+            frame = new JFrame("EditorRepaintsGuiTest");
+            frame.add(new org.fife.ui.rtextarea.RTextScrollPane(a));
+            frame.setSize(500, 400);
+            frame.setVisible(true);
+            return a;
+        });
+        waitFor("the area to show", 10, area::isShowing);
+        List<String> wholeArea = new ArrayList<>();
+        List<int[]> regions = new ArrayList<>();
+        onEdt(() -> {
+            previous = RepaintManager.currentManager(area);
+            RepaintManager.setCurrentManager(new RepaintManager() {
+                @Override
+                public void addDirtyRegion(JComponent c, int x, int y, int w, int h) {
+                    if (c == area && w >= area.getWidth() && h >= area.getHeight()) wholeArea.add(w + "x" + h);
+                    if (c == area) regions.add(new int[] {y, h});
+                    super.addDirtyRegion(c, x, y, w, h);
+                }
+            });
+        });
+
+        // "x" at the start of the second line: that line is repainted, not the whole area.
+        int lineHeight = onEdt(area::getLineHeight);
+        onEdt(() -> area.insert("x", text.indexOf("b = 2")));
+        assertThat(onEdt(() -> area.getText())).isEqualTo("a = 1\nxb = 2\nScene { Sphere { } }\n");
+        assertThat(onEdt(() -> List.copyOf(wholeArea))).isEmpty();
+        assertThat(onEdt(() -> regions.stream().anyMatch(r -> r[0] <= lineHeight && r[0] + r[1] >= 2 * lineHeight)))
+                .as("the second line repainted").isTrue();
+
+        // A line break typed there moves every line below it: the whole area is repainted.
+        onEdt(() -> wholeArea.clear());
+        onEdt(() -> area.insert("\n", text.indexOf("b = 2")));
+        assertThat(onEdt(() -> List.copyOf(wholeArea))).isNotEmpty();
+
+        // The view's own repaint takes the mark: a repaint asked for right after the insert goes through.
+        onEdt(() -> {
+            area.insert("y", area.getText().indexOf("Scene"));
+            wholeArea.clear();
+            area.repaint();
+        });
         assertThat(onEdt(() -> List.copyOf(wholeArea))).isNotEmpty();
     }
 

@@ -11,6 +11,11 @@ import javax.swing.SwingUtilities;
  * {@code Robot.waitForIdle()}: it makes the EDT wait for up to 20 round trips to the X server,
  * which on a loaded machine took up to a second. Those are counted apart ({@link #robotSyncMillis}),
  * as no user ever causes them; for any other stall of 250 ms or more the EDT's stack is printed.
+ *
+ * <p>A collector's pause stops the EDT too, but the empty event only sees the part of a pause that
+ * falls while it waits: a pause that begins while the watchdog sleeps between its events holds that
+ * thread as well, and the next event is posted after it. So the collectors' own pause figures
+ * (their MXBeans, read after every event) count as stalls as well.
  */
 final class EdtWatchdog implements AutoCloseable {
     private final Thread thread;
@@ -19,13 +24,19 @@ final class EdtWatchdog implements AutoCloseable {
     private volatile Thread edt;
     private final java.util.concurrent.atomic.AtomicLong longestNanos = new java.util.concurrent.atomic.AtomicLong();
     private final java.util.concurrent.atomic.AtomicLong robotSyncNanos = new java.util.concurrent.atomic.AtomicLong();
+    /** The longest collector pause that began since the last reset, in ms. */
+    private final java.util.concurrent.atomic.AtomicLong longestPauseMillis = new java.util.concurrent.atomic.AtomicLong();
+    private final java.util.Map<String, Long> pausesSeen = new java.util.concurrent.ConcurrentHashMap<>();
 
     /** Stalls longer than this have their stack printed (-Dcrt.watchdog.printMs; 250 ms unless set). */
     private static final long PRINT_NANOS = Long.getLong("crt.watchdog.printMs", 250) * 1_000_000L;
 
     EdtWatchdog() {
+        countPauses();
+        longestPauseMillis.set(0);
         thread = new Thread(() -> {
             while (running) {
+                countPauses();
                 long start = System.nanoTime();
                 java.util.concurrent.CountDownLatch ran = new java.util.concurrent.CountDownLatch(1);
                 SwingUtilities.invokeLater(() -> {
@@ -81,7 +92,36 @@ final class EdtWatchdog implements AutoCloseable {
         return b.toString();
     }
 
-    long longestMillis() { return longestNanos.get() / 1_000_000; }
+    long longestMillis() {
+        countPauses();
+        return Math.max(longestNanos.get() / 1_000_000, longestPauseMillis.get());
+    }
+
+    /**
+     * Reads each collector's last pause, if it is new since the last look. A collector whose bean
+     * times whole concurrent cycles (ZGC's and Shenandoah's "Cycles") is skipped: those are not
+     * pauses. Read every 10 ms, so two pauses of one collector between two looks are unlikely. A
+     * pause is new when the collector's count has grown since the last look (no reset can run
+     * during a pause, which stops its thread too), so no clock has to match the collector's.
+     */
+    private synchronized void countPauses() {
+        for (var bean : java.lang.management.ManagementFactory.getGarbageCollectorMXBeans()) {
+            if (bean.getName().contains("Cycles") || !(bean instanceof com.sun.management.GarbageCollectorMXBean gc)) continue;
+            long count = gc.getCollectionCount();
+            Long seen = pausesSeen.put(gc.getName(), count);
+            if (seen == null || seen == count) continue;
+            com.sun.management.GcInfo info = gc.getLastGcInfo();
+            if (info == null) continue;
+            long pause = info.getDuration();
+            longestPauseMillis.accumulateAndGet(pause, Math::max);
+            if (pause * 1_000_000L > PRINT_NANOS) {
+                System.out.println("EDT watchdog: a collector pause of " + pause + " ms, seen at " + uptimeMillis() / 1000.0
+                        + " s of uptime (" + gc.getName() + ", " + (count - seen) + " since the last look): the EDT stopped with every thread");
+            }
+        }
+    }
+
+    private static long uptimeMillis() { return java.lang.management.ManagementFactory.getRuntimeMXBean().getUptime(); }
 
     /** The longest wait caused by the test robot's own waitForIdle, not counted in {@link #longestMillis}. */
     long robotSyncMillis() { return robotSyncNanos.get() / 1_000_000; }
@@ -89,11 +129,13 @@ final class EdtWatchdog implements AutoCloseable {
     /** Prints the longest stall of the test just run, the robot's own waits apart (the figure issue 7 asks to report). */
     void report(String testName) {
         System.out.println("EDT watchdog, " + testName + ": longest stall " + longestMillis()
-                + " ms (robot's waitForIdle apart: " + robotSyncMillis() + " ms)");
+                + " ms (robot's waitForIdle apart: " + robotSyncMillis() + " ms; of it the longest collector pause " + longestPauseMillis.get() + " ms)");
     }
 
     /** Starts a new measurement (an event already waiting counts in the new one). */
     void reset() {
+        countPauses();
+        longestPauseMillis.set(0);
         longestNanos.set(0);
         robotSyncNanos.set(0);
     }
