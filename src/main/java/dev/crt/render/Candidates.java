@@ -27,9 +27,7 @@ final class Candidates {
     static final int SHADOW_AFTER = 4;
     /** Relative widening of every region test, far above the rounding of rays, hits and the tests themselves. */
     private static final double WIDEN = 1e-9;
-    /** A pair on trial is −(cost of its walks << TRIAL_BITS | walks), the cost as {@link #walked} is told it. */
-    private static final int TRIAL_BITS = 3, TRIAL_MASK = (1 << TRIAL_BITS) - 1;
-    /** The (shape, light) pair whose shadow ray is walking on trial, or −1. */
+    /** The record of the (shape, light) pair whose shadow ray is walking on trial, or −1. */
     private int trialKey = -1;
     /** The weight of a CSG tree or a mesh against a plain shape's test, in {@link #weight}. */
     static final int HEAVY = 8;
@@ -66,17 +64,34 @@ final class Candidates {
      * thread (a million spheres under four lights still fit).
      */
     private static final long MAX_PAIRS = 1L << 22;
+    /** At most this many records a thread (72 bytes each); pairs and faces beyond keep the walk. */
+    static final int MAX_RECORDS = 1 << 18;
+    /** At most this many ints of lists a thread (16 MB); once full, no more lists are built. */
+    static final int MAX_POOL = 1 << 22;
+    /** A listed pair's region grows to take in an origin outside it at most this many times. */
+    static final int MAX_GROWTHS = 8;
     /** Whether the scene has few enough pairs for shadow lists. */
     private final boolean shadowLists;
-    /** Per shape × light: 0 unseen, negative on trial (see {@link #TRIAL_BITS}), {@link #WALK}, or 1 + the list's index in {@link #pool}. */
+    /** Per shape × light: 0 unseen, {@link #WALK}, or 1 + the pair's first record. */
     private int[] state;
-    /** The lists, each: its length, its region's number, then its items in depth-first leaf order. */
+    /**
+     * Per record, {@value #RECORD} ints: the walks taken on trial, their cost (see {@link #walked}), 1 + its
+     * list's index in {@link #pool} (0: none yet, −1: walk), the growths left, the face (of a box;
+     * else 0), 1 + the next record of the same pair (0: none); and six doubles in
+     * {@link #regions}: the box of the origins seen (on trial) or covered by the list.
+     */
+    private int[] records = new int[RECORD * 64];
+    /** Ints per record. */
+    private static final int RECORD = 6;
+    /** A record's list field (less 1) when its rays walk. */
+    private static final int WALKS = -2;
+    private int recordCount;
+    /** The lists, each: its length, its record, then its items in depth-first leaf order. */
     int[] pool = new int[1024];
     private int poolSize;
-    /** Per list (its number at pool[list + 1]), the box its shadow rays' origins must lie in: min x, y, z, max x, y, z. */
+    /** Per record: min x, y, z, max x, y, z. */
     private double[] regions = new double[6 * 64];
-    private int regionCount;
-    /** The region box and the light point of the shadow list being built. */
+    /** The region box and the far box of the shadow list being built. */
     private final double[] hull = new double[12];
 
     Candidates(Bvh bvh, int[] items, Shapes shapes, Lights lights) {
@@ -210,73 +225,131 @@ final class Candidates {
     }
 
     /**
-     * The index in {@link #pool} of the shadow list of {@code shape} towards point light {@code light}
-     * (at its position q), valid for a shadow ray from o; −1 when the ray is to walk the tree.
+     * The index in {@link #pool} of the shadow list of {@code shape} (a box: its face {@code face})
+     * towards {@code light}, valid for a shadow ray from o; −1 when the ray is to walk the tree.
+     *
+     * <p>A list covers the region its pair's shadow rays came from, not the shape's whole box: the
+     * box of the origins of its first {@value #SHADOW_AFTER} rays (which walk on trial), widened by
+     * its own extent on each axis. A later origin outside it grows the region (the union, widened
+     * again) and builds the list again, {@value #MAX_GROWTHS} times at most; after that such rays walk.
      */
-    int shadow(int shape, int light, double ox, double oy, double oz) {
+    int shadow(int shape, int face, int light, double ox, double oy, double oz) {
         trialKey = -1;
         if (!shadowLists) return -1;
         int[] st = state;
         if (st == null) st = state = new int[shapes.count() * lights.count];
         int key = shape * lights.count + light;
+        // A box's faces keep records of their own: the origins on one face lie in one plane.
+        if (shapes.kind[shape] != Shapes.BOX) face = 0;
         int s = st[key];
         if (s == WALK) return -1;
-        if (s <= 0) {
-            int walks = -s & TRIAL_MASK;
-            if (walks < SHADOW_AFTER) {
-                trialKey = key;
+        int[] rc = records;
+        int rec;
+        if (s == 0) {
+            if (recordCount == MAX_RECORDS) {
+                st[key] = WALK;
                 return -1;
             }
-            s = st[key] = buildShadow(shape, light, (double) (-s >>> TRIAL_BITS) / walks);
-            if (s == WALK) return -1;
+            rec = newRecord(face);
+            st[key] = 1 + rec;
+            rc = records;
+        } else {
+            rec = s - 1;
+            while (rc[RECORD * rec + 4] != face) {
+                int next = rc[RECORD * rec + 5];
+                if (next == 0) {
+                    if (recordCount == MAX_RECORDS) return -1;
+                    int added = newRecord(face);
+                    rc = records;
+                    rc[RECORD * rec + 5] = 1 + added;
+                    next = 1 + added;
+                }
+                rec = next - 1;
+            }
         }
-        int list = s - 1;
+        int ri = RECORD * rec, k = 6 * rec;
         double[] r = regions;
-        int k = 6 * pool[list + 1];
-        return ox >= r[k] && oy >= r[k + 1] && oz >= r[k + 2] && ox <= r[k + 3] && oy <= r[k + 4] && oz <= r[k + 5] ? list : -1;
+        int list = rc[ri + 2] - 1;
+        if (list == WALKS) return -1;
+        boolean inside = ox >= r[k] && oy >= r[k + 1] && oz >= r[k + 2] && ox <= r[k + 3] && oy <= r[k + 4] && oz <= r[k + 5];
+        if (list >= 0) {
+            if (inside) return list;
+            if (rc[ri + 3] == 0) return -1;
+            rc[ri + 3]--;
+            int grown = grow(shape, light, rec, ox, oy, oz);
+            if (grown < 0) rc[ri + 3] = 0;
+            return grown;
+        }
+        if (rc[ri] < SHADOW_AFTER) {
+            if (!inside) {
+                r[k] = Math.min(r[k], ox);
+                r[k + 1] = Math.min(r[k + 1], oy);
+                r[k + 2] = Math.min(r[k + 2], oz);
+                r[k + 3] = Math.max(r[k + 3], ox);
+                r[k + 4] = Math.max(r[k + 4], oy);
+                r[k + 5] = Math.max(r[k + 5], oz);
+            }
+            trialKey = rec;
+            return -1;
+        }
+        int grown = grow(shape, light, rec, ox, oy, oz);
+        if (grown < 0) rc[ri + 2] = WALKS + 1;
+        return grown;
+    }
+
+    private int newRecord(int face) {
+        int rec = recordCount++;
+        if (records.length < RECORD * recordCount) {
+            records = Arrays.copyOf(records, 2 * records.length);
+            regions = Arrays.copyOf(regions, 2 * regions.length);
+        }
+        int ri = RECORD * rec;
+        records[ri] = 0;
+        records[ri + 1] = 0;
+        records[ri + 2] = 0;
+        records[ri + 3] = MAX_GROWTHS;
+        records[ri + 4] = face;
+        records[ri + 5] = 0;
+        int k = 6 * rec;
+        regions[k] = regions[k + 1] = regions[k + 2] = Double.POSITIVE_INFINITY;
+        regions[k + 3] = regions[k + 4] = regions[k + 5] = Double.NEGATIVE_INFINITY;
+        return rec;
     }
 
     /**
-     * Records what the walk of the shadow ray the last {@link #shadow} call turned down cost, while
-     * its pair is on trial: the walks it took (0 or 1), and their nodes opened plus their items
-     * tested, weighed by {@link #weight} (a node's two box tests cost about a sphere's test).
+     * Widens record {@code rec}'s region to take in o, by the union's extent on each axis but never
+     * past the shape's box widened by the tracer's offset (no origin lies outside it), and builds
+     * its list for that region; the new list, or −1 when the pair is to walk (its list would be too
+     * long, cost more than its trial walks did on average, or the pool is full). On −1 the region and
+     * list stay as they were.
      */
-    void walked(int walks, int cost) {
-        if (trialKey < 0 || walks == 0) return;
-        int s = -state[trialKey];
-        int items = Math.min((s >>> TRIAL_BITS) + cost, Integer.MAX_VALUE >>> TRIAL_BITS);
-        state[trialKey] = -(items << TRIAL_BITS | (s & TRIAL_MASK) + walks);
-        trialKey = -1;
-    }
-
-    /**
-     * What testing an item costs, in tests of a plain shape: a CSG tree or a mesh gathers or walks
-     * its own parts. {@link Tracer}'s walk counts its CSG trees the same way.
-     */
-    int weight(int item) {
-        return item < 0 ? HEAVY : shapes.kind[item] == Shapes.MESH ? HEAVY : 1;
-    }
-
-    /**
-     * Builds the shadow list of {@code shape} towards {@code light}, or returns {@link #WALK} when it
-     * would be too long or cost more than {@code walkedCost}, what its pair's walks cost on average:
-     * each a node's pair of box tests and each item tested, weighed by {@link #weight}.
-     */
-    private int buildShadow(int shape, int light, double walkedCost) {
+    private int grow(int shape, int light, int rec, double ox, double oy, double oz) {
         Aabb b = shapes.bounds(shape);
-        if (b.isEmpty() || !b.isFinite()) return WALK;
+        if (b.isEmpty() || !b.isFinite()) return -1;
+        int ri = RECORD * rec, walks = records[ri];
+        if (walks == 0) return -1;
+        double walkedCost = (double) records[ri + 1] / walks;
         double x0 = b.min().x(), y0 = b.min().y(), z0 = b.min().z(), x1 = b.max().x(), y1 = b.max().y(), z1 = b.max().z();
         // The shadow ray leaves the hit point by Tracer's offset, at most OFFSET × max(|p|, scale).
         double big = Math.max(Math.max(Math.max(Math.abs(x0), Math.abs(x1)), Math.max(Math.abs(y0), Math.abs(y1))),
                 Math.max(Math.max(Math.abs(z0), Math.abs(z1)), shapes.scale[shape]));
         double w = 4 * Tracer.OFFSET * big;
-        double[] h = hull;
-        h[0] = x0 - w;
-        h[1] = y0 - w;
-        h[2] = z0 - w;
-        h[3] = x1 + w;
-        h[4] = y1 + w;
-        h[5] = z1 + w;
+        double[] r = regions, h = hull;
+        int k = 6 * rec;
+        boolean first = records[ri + 2] == 0;
+        for (int a = 0; a < 3; a++) {
+            double o = a == 0 ? ox : a == 1 ? oy : oz, lo = r[k + a], hi = r[k + 3 + a];
+            double bl = (a == 0 ? x0 : a == 1 ? y0 : z0) - w, bh = (a == 0 ? x1 : a == 1 ? y1 : z1) + w;
+            // The first region is the trial origins' box widened by its extent on every side; a
+            // growth widens only the sides o lies beyond, by the union's extent or at least 1/32
+            // of the shape's, so that a few growths cover what the rays come from.
+            double extent = Math.max(hi, o) - Math.min(lo, o), step = Math.max(extent, (bh - bl) / 32);
+            double nl = first ? Math.min(lo, o) - extent : o < lo ? o - step : lo;
+            double nh = first ? Math.max(hi, o) + extent : o > hi ? o + step : hi;
+            // Clipped to the widened box, but always holding o (a region must hold the ray's origin).
+            h[a] = Math.min(Math.max(nl, bl), o);
+            h[3 + a] = Math.max(Math.min(nh, bh), o);
+        }
         if (lights.kind[light] == Lights.PARALLEL) {
             // Every shadow ray runs along the light's direction w to infinity: the region box swept
             // along w. Swept by more than the diameter of the box around every item, nothing lies
@@ -294,18 +367,40 @@ final class Candidates {
             h[8] = h[11] = lights.z[light];
         }
         int at = poolSize;
+        if (at + 2 + SHADOW_LIMIT > MAX_POOL) return -1;
         if (pool.length < at + 2 + SHADOW_LIMIT) pool = Arrays.copyOf(pool, Math.max(2 * pool.length, at + 2 + SHADOW_LIMIT));
-        if (regions.length < 6 * (regionCount + 1)) regions = Arrays.copyOf(regions, 2 * regions.length);
         int n = collectInto(false, pool, at + 2, SHADOW_LIMIT, null);
-        if (n < 0) return WALK;
+        if (n < 0) return -1;
         double cost = 0;
-        for (int k = at + 2; k < at + 2 + n; k++) cost += weight(pool[k]);
-        if (cost > walkedCost) return WALK;
+        for (int i = at + 2; i < at + 2 + n; i++) cost += weight(pool[i]);
+        if (cost > walkedCost) return -1;
         pool[at] = n;
-        pool[at + 1] = regionCount;
-        System.arraycopy(h, 0, regions, 6 * regionCount++, 6);
+        pool[at + 1] = rec;
+        System.arraycopy(h, 0, r, k, 6);
         poolSize = at + 2 + n;
-        return at + 1;
+        records[ri + 2] = at + 1;
+        return at;
+    }
+
+    /**
+     * Records what the walk of the shadow ray the last {@link #shadow} call turned down cost, while
+     * its pair is on trial: the walks it took (0 or 1), and their nodes opened plus their items
+     * tested, weighed by {@link #weight} (a node's two box tests cost about a sphere's test).
+     */
+    void walked(int walks, int cost) {
+        if (trialKey < 0 || walks == 0) return;
+        int ri = RECORD * trialKey;
+        records[ri] += walks;
+        records[ri + 1] = (int) Math.min((long) records[ri + 1] + cost, Integer.MAX_VALUE);
+        trialKey = -1;
+    }
+
+    /**
+     * What testing an item costs, in tests of a plain shape: a CSG tree or a mesh gathers or walks
+     * its own parts. {@link Tracer}'s walk counts its CSG trees the same way.
+     */
+    int weight(int item) {
+        return item < 0 ? HEAVY : shapes.kind[item] == Shapes.MESH ? HEAVY : 1;
     }
 
     /**
@@ -374,16 +469,26 @@ final class Candidates {
                     int item = items[i];
                     double x0 = b[slot], y0 = b[slot + 2], z0 = b[slot + 4];
                     double x1 = b[slot + Bvh.MAX], y1 = b[slot + Bvh.MAX + 2], z1 = b[slot + Bvh.MAX + 4];
-                    if (item >= 0 && shapes.kind[item] == Shapes.SPHERE) {
+                    int kind = item >= 0 ? shapes.kind[item] : -1;
+                    if (kind == Shapes.SPHERE || kind == Shapes.BOX) {
                         double[] d = shapes.data;
                         int o = shapes.offset[item];
-                        double r = d[o + 3];
-                        x0 = d[o] - r;
-                        y0 = d[o + 1] - r;
-                        z0 = d[o + 2] - r;
-                        x1 = d[o] + r;
-                        y1 = d[o + 1] + r;
-                        z1 = d[o + 2] + r;
+                        if (kind == Shapes.SPHERE) {
+                            double r = d[o + 3];
+                            x0 = d[o] - r;
+                            y0 = d[o + 1] - r;
+                            z0 = d[o + 2] - r;
+                            x1 = d[o] + r;
+                            y1 = d[o + 1] + r;
+                            z1 = d[o + 2] + r;
+                        } else {
+                            x0 = d[o];
+                            y0 = d[o + 1];
+                            z0 = d[o + 2];
+                            x1 = d[o + 3];
+                            y1 = d[o + 4];
+                            z1 = d[o + 5];
+                        }
                         if (!(frustum ? inFrustum(x0, y0, z0, x1, y1, z1) : inHull(x0, y0, z0, x1, y1, z1))) continue;
                     }
                     if (n == limit) return -1;

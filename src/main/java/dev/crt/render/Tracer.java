@@ -51,6 +51,8 @@ final class Tracer {
     boolean blockRay;
     /** The shape whose surface is being shaded (its shadow rays may take its list), or {@link #NONE}. */
     int shading = NONE;
+    /** The face of {@link #shading}'s surface being shaded. */
+    int shadingFace;
     /** Shadow rays that walked the BVH, and the items they tested (weighed as {@link Candidates#weight}). */
     private int walks, tested;
     /** The item that made the last {@link #blocked} true. */
@@ -188,6 +190,7 @@ final class Tracer {
             // On smooth meshes the lights are looked at from the shading point and along the shading
             // normal; shadow rays still leave along the geometric normal.
             shading = s;
+            shadingFace = hit.face;
             if (Features.GOOCH && gooch != null && mat[m + Materials.MODEL] == Materials.GOOCH) {
                 gooch.shade(m, cr, cg, cb, ks, er, eg, eb, px, py, pz, snx, sny, snz, -dx, -dy, -dz, colour);
             } else if (Features.SHAPES && surface.shaded) {
@@ -383,7 +386,7 @@ final class Tracer {
     private double listedTransmittance(double ox, double oy, double oz, double wx, double wy, double wz, double tMax, int light,
             boolean listable) {
         if (!listable || shading == NONE || candidates == null) return transmittance(ox, oy, oz, wx, wy, wz, tMax, light, -1);
-        int list = candidates.shadow(shading, light, ox, oy, oz);
+        int list = candidates.shadow(shading, shadingFace, light, ox, oy, oz);
         if (list >= 0) return transmittance(ox, oy, oz, wx, wy, wz, tMax, light, list);
         int walks = this.walks, tested = this.tested + walker.anySteps;
         double s = transmittance(ox, oy, oz, wx, wy, wz, tMax, light, -1);

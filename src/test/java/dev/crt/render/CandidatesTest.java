@@ -179,16 +179,50 @@ class CandidatesTest {
      * (on the grid or above the field) or, with {@code parallel}, a parallel light.
      */
     private static void checkShadows(SplittableRandom r, boolean parallel) {
+        checkShadows(r, parallel, false);
+    }
+
+    @Test
+    void aShadowListGrownOverAFieldOfColumnsGivesEachShadowRayTheFactorOfItsOwnWalkToTheBit() {
+        checkShadows(new SplittableRandom(44), false, true);
+        checkShadows(new SplittableRandom(45), true, true);
+    }
+
+    /**
+     * Columns of random heights packed on a grid (the 2015 drops scene's field), some transparent,
+     * seen from above: a column's top face and the upper parts of its sides cast the shadow rays,
+     * so its lists cover a small region that grows as rays come from farther parts of it.
+     */
+    private static List<Entity> columns(SplittableRandom r) {
+        List<Entity> es = new ArrayList<>();
+        for (int i = -6; i < 6; i++) {
+            for (int j = -6; j < 6; j++) {
+                double top = 0.01 + r.nextDouble() * (r.nextInt(4) == 0 ? 0.6 : 0.2);
+                Material m = r.nextInt(3) == 0 ? PAINTS[r.nextInt(PAINTS.length)] : PAINTS[0];
+                es.add(box(v(0.5 * i, -3, 0.5 * j), v(0.5 * i + 0.5, top, 0.5 * j + 0.5), m));
+            }
+        }
+        if (r.nextBoolean()) {
+            es.add(csg(CsgOperation.DIFFERENCE, sphere(v(0.3, 1.2, 0.2), 0.6, PAINTS[2]), box(v(-1, 1.1, -1), v(1, 3, 1), PAINTS[0])));
+        }
+        return es;
+    }
+
+    private static void checkShadows(SplittableRandom r, boolean parallel, boolean columns) {
         int listed = 0, partial = 0, rays = 0;
         double[] d = new double[3];
         LightSample sample = new LightSample();
         for (int scene = 0; scene < 16; scene++) {
-            Vec3 light = r.nextBoolean() ? gridPoint(r) : v(r.nextGaussian() * 8, 5 + r.nextDouble() * 10, r.nextGaussian() * 8);
+            Vec3 light = columns ? v(r.nextGaussian() * 3, 1 + r.nextDouble() * 4, r.nextGaussian() * 3)
+                    : r.nextBoolean() ? gridPoint(r) : v(r.nextGaussian() * 8, 5 + r.nextDouble() * 10, r.nextGaussian() * 8);
+            if (columns && parallel) light = v(r.nextGaussian(), 0.1 + r.nextDouble(), r.nextGaussian());
             Light source = parallel ? parallel(light, v(0, 0, 0), rgb(1, 1, 1), 0.1) : point(light, rgb(1, 1, 1), 0, 0.1);
-            Settings s = settings(aimed(r), List.of(source), Background.BLACK, 64, 48);
+            Camera eye = columns ? camera(v(r.nextGaussian() * 2, 1 + r.nextDouble() * 2, 4), v(r.nextGaussian(), 0, 0), 40 + r.nextInt(40))
+                    : aimed(r);
+            Settings s = settings(eye, List.of(source), Background.BLACK, 64, 48);
             Vec3 towards = parallel ? ((ParallelLight) source).towardsLight() : null;
             Lights lights = new Lights(s.lights());
-            List<Entity> es = field(r, true);
+            List<Entity> es = columns ? columns(r) : field(r, true);
             Tracer listing = tracer(es, s), walking = tracer(es, s);
             CameraRays camera = new CameraRays(s.camera(), 64, 48);
             SurfacePoint p = new SurfacePoint();
@@ -206,16 +240,17 @@ class CandidatesTest {
                 double ox = p.px + side * p.nx, oy = p.py + side * p.ny, oz = p.pz + side * p.nz;
                 walking.shading = Tracer.NONE;
                 listing.shading = shape;
+                listing.shadingFace = walking.hit.face;
                 double lone, fast;
                 boolean list;
                 if (parallel) {
                     lights.sample(0, 0, p.px, p.py, p.pz, null, sample);
                     lone = walking.shadow(sample, p.px, p.py, p.pz, p.nx, p.ny, p.nz, side, 0);
-                    list = listing.candidates.shadow(shape, 0, ox, oy, oz) >= 0;
+                    list = listing.candidates.shadow(shape, walking.hit.face, 0, ox, oy, oz) >= 0;
                     fast = listing.shadow(sample, p.px, p.py, p.pz, p.nx, p.ny, p.nz, side, 0);
                 } else {
                     lone = walking.shadowTo(ox, oy, oz, light.x(), light.y(), light.z(), side, 0);
-                    list = listing.candidates.shadow(shape, 0, ox, oy, oz) >= 0;
+                    list = listing.candidates.shadow(shape, walking.hit.face, 0, ox, oy, oz) >= 0;
                     fast = listing.shadowTo(ox, oy, oz, light.x(), light.y(), light.z(), side, 0);
                 }
                 String what = "scene " + scene + ", ray " + k + " from shape " + shape;
@@ -230,8 +265,8 @@ class CandidatesTest {
                 }
             }
         }
-        System.out.printf("shadow lists%s: %d rays, %d listed, %d partly lit%n", parallel ? " (parallel light)" : "", rays, listed,
-                partial);
+        System.out.printf("shadow lists%s%s: %d rays, %d listed, %d partly lit%n", parallel ? " (parallel light)" : "",
+                columns ? " (columns)" : "", rays, listed, partial);
         // The lists were taken for many rays (the others' pairs weigh more listed than walked), and
         // many of those crossed transparent casters.
         // (A parallel light's sweep crosses the whole field: fewer of its lists pay.)
@@ -266,7 +301,8 @@ class CandidatesTest {
                     int shape = t.hit.shape;
                     double hx = camera.px + t.hit.t * d[0], hy = camera.py + t.hit.t * d[1], hz = camera.pz + t.hit.t * d[2];
                     t.shading = shape;
-                    if (pass == 5 && t.candidates.shadow(shape, 0, hx, hy, hz) >= 0) listed++;
+                    t.shadingFace = t.hit.face;
+                    if (pass == 5 && t.candidates.shadow(shape, t.hit.face, 0, hx, hy, hz) >= 0) listed++;
                     t.shadowTo(hx, hy, hz, light.x(), light.y(), light.z(), 0, 0);
                 }
             }
