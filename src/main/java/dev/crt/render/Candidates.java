@@ -27,12 +27,8 @@ final class Candidates {
     static final int SHADOW_AFTER = 4;
     /** Relative widening of every region test, far above the rounding of rays, hits and the tests themselves. */
     private static final double WIDEN = 1e-9;
-    /** The record of the (shape, light) pair whose shadow ray is walking on trial, or −1. */
-    private int trialKey = -1;
     /** The weight of a CSG tree or a mesh against a plain shape's test, in {@link #weight}. */
     static final int HEAVY = 8;
-    /** A state of a (shape, light) pair: no list, always the walk. */
-    private static final int WALK = Integer.MAX_VALUE;
 
     private final Bvh bvh;
     private final int[] items;
@@ -64,21 +60,25 @@ final class Candidates {
      * thread (a million spheres under four lights still fit).
      */
     private static final long MAX_PAIRS = 1L << 22;
-    /** At most this many records a thread (72 bytes each); pairs and faces beyond keep the walk. */
-    static final int MAX_RECORDS = 1 << 18;
-    /** At most this many ints of lists a thread (16 MB); once full, no more lists are built. */
+    /** At most this many records a thread (120 bytes each); rays they would cover keep the walk. */
+    static final int MAX_RECORDS = 1 << 17;
+    /** At most this many ints (and as many bounds) of lists a thread (48 MB); once full, no more lists are built. */
     static final int MAX_POOL = 1 << 22;
-    /** A listed pair's region grows to take in an origin outside it at most this many times. */
-    static final int MAX_GROWTHS = 8;
-    /** Whether the scene has few enough pairs for shadow lists. */
-    private final boolean shadowLists;
-    /** Per shape × light: 0 unseen, {@link #WALK}, or 1 + the pair's first record. */
+    /** Records a key keeps per face: regions apart on one face (a list that could not grow) get records of their own. */
+    static final int MAX_SIBLINGS = 4;
+    /** A record's region grows to take in a ray outside it at most this many times. */
+    static final int MAX_GROWTHS = 12;
+    /** Whether the scene has few enough pairs for lists. */
+    private final boolean lists;
+    /**
+     * Per key, 0 unseen or 1 + its first record: key shape × lights + light for the shadow rays of
+     * (shape, light), shapes × lights + shape for the mirror-reflected rays leaving the shape.
+     */
     private int[] state;
     /**
-     * Per record, {@value #RECORD} ints: the walks taken on trial, their cost (see {@link #walked}), 1 + its
-     * list's index in {@link #pool} (0: none yet, −1: walk), the growths left, the face (of a box;
-     * else 0), 1 + the next record of the same pair (0: none); and six doubles in
-     * {@link #regions}: the box of the origins seen (on trial) or covered by the list.
+     * Per record, {@value #RECORD} ints: the walks taken on trial, their cost (see {@link #walked}),
+     * 1 + its list's index in {@link #pool} (0: none yet, −1: walk), the growths left, the face (of
+     * a box; else 0), 1 + the next record of the key (0: none); and 12 doubles in {@link #regions}.
      */
     private int[] records = new int[RECORD * 64];
     /** Ints per record. */
@@ -86,11 +86,24 @@ final class Candidates {
     /** A record's list field (less 1) when its rays walk. */
     private static final int WALKS = -2;
     private int recordCount;
-    /** The lists, each: its length, its record, then its items in depth-first leaf order. */
+    /**
+     * Per record: the box its rays' origins lie in (min x, y, z, max x, y, z), then the box their
+     * directions lie in (reflected rays; ±∞ for shadow rays, whose direction the light fixes).
+     */
+    private double[] regions = new double[12 * 64];
+    /**
+     * The lists, each: its length, then its items: a shadow list in depth-first leaf order, a
+     * reflected-ray list by ascending lower bound of the ray parameter, held at the same index in
+     * {@link #near}.
+     */
     int[] pool = new int[1024];
+    double[] near = new double[1024];
     private int poolSize;
-    /** Per record: min x, y, z, max x, y, z. */
-    private double[] regions = new double[6 * 64];
+    /** The record whose ray is walking on trial, or −1. */
+    private int trialRecord = -1;
+    /** The direction box of the reflected-ray list being built, and the largest length of a direction in it. */
+    private final double[] directions = new double[6];
+    private double reach;
     /** The region box and the far box of the shadow list being built. */
     private final double[] hull = new double[12];
 
@@ -104,7 +117,7 @@ final class Candidates {
         double size = 0;
         for (double v : bvh.root) size = Math.max(size, Math.abs(v));
         sceneSize = size;
-        shadowLists = (long) shapes.count() * lights.count <= MAX_PAIRS;
+        lists = (long) shapes.count() * (lights.count + 1) <= MAX_PAIRS;
     }
 
     /**
@@ -154,19 +167,7 @@ final class Candidates {
         setPlane(4, c.fx, c.fy, c.fz);
         blockCount = collect(true, blockItems, BLOCK_LIMIT);
         if (blockCount < 0) return;
-        // Insertion sort by the lower bound (lists are short); ties keep the leaves' order.
-        for (int k = 1; k < blockCount; k++) {
-            double t = blockNear[k];
-            int item = blockItems[k];
-            int m = k - 1;
-            while (m >= 0 && blockNear[m] > t) {
-                blockNear[m + 1] = blockNear[m];
-                blockItems[m + 1] = blockItems[m];
-                m--;
-            }
-            blockNear[m + 1] = t;
-            blockItems[m + 1] = item;
-        }
+        sortByNear(blockItems, blockNear, 0, blockCount);
     }
 
     /** Plane k through the camera containing directions e and g, its normal turned towards the direction m inside. */
@@ -227,74 +228,96 @@ final class Candidates {
     /**
      * The index in {@link #pool} of the shadow list of {@code shape} (a box: its face {@code face})
      * towards {@code light}, valid for a shadow ray from o; −1 when the ray is to walk the tree.
-     *
-     * <p>A list covers the region its pair's shadow rays came from, not the shape's whole box: the
-     * box of the origins of its first {@value #SHADOW_AFTER} rays (which walk on trial), widened by
-     * its own extent on each axis. A later origin outside it grows the region (the union, widened
-     * again) and builds the list again, {@value #MAX_GROWTHS} times at most; after that such rays walk.
      */
     int shadow(int shape, int face, int light, double ox, double oy, double oz) {
-        trialKey = -1;
-        if (!shadowLists) return -1;
-        int[] st = state;
-        if (st == null) st = state = new int[shapes.count() * lights.count];
-        int key = shape * lights.count + light;
-        // A box's faces keep records of their own: the origins on one face lie in one plane.
-        if (shapes.kind[shape] != Shapes.BOX) face = 0;
-        int s = st[key];
-        if (s == WALK) return -1;
-        int[] rc = records;
-        int rec;
-        if (s == 0) {
-            if (recordCount == MAX_RECORDS) {
-                st[key] = WALK;
-                return -1;
-            }
-            rec = newRecord(face);
-            st[key] = 1 + rec;
-            rc = records;
-        } else {
-            rec = s - 1;
-            while (rc[RECORD * rec + 4] != face) {
-                int next = rc[RECORD * rec + 5];
-                if (next == 0) {
-                    if (recordCount == MAX_RECORDS) return -1;
-                    int added = newRecord(face);
-                    rc = records;
-                    rc[RECORD * rec + 5] = 1 + added;
-                    next = 1 + added;
-                }
-                rec = next - 1;
-            }
-        }
-        int ri = RECORD * rec, k = 6 * rec;
-        double[] r = regions;
-        int list = rc[ri + 2] - 1;
-        if (list == WALKS) return -1;
-        boolean inside = ox >= r[k] && oy >= r[k + 1] && oz >= r[k + 2] && ox <= r[k + 3] && oy <= r[k + 4] && oz <= r[k + 5];
-        if (list >= 0) {
-            if (inside) return list;
-            if (rc[ri + 3] == 0) return -1;
-            rc[ri + 3]--;
-            int grown = grow(shape, light, rec, ox, oy, oz);
-            if (grown < 0) rc[ri + 3] = 0;
-            return grown;
-        }
-        if (rc[ri] < SHADOW_AFTER) {
-            if (!inside) {
-                r[k] = Math.min(r[k], ox);
-                r[k + 1] = Math.min(r[k + 1], oy);
-                r[k + 2] = Math.min(r[k + 2], oz);
-                r[k + 3] = Math.max(r[k + 3], ox);
-                r[k + 4] = Math.max(r[k + 4], oy);
-                r[k + 5] = Math.max(r[k + 5], oz);
-            }
-            trialKey = rec;
+        return lookup(shape * lights.count + light, shape, face, light, ox, oy, oz, 0, 0, 0);
+    }
+
+    /**
+     * The index in {@link #pool} of the list for a mirror-reflected ray leaving {@code shape} (a
+     * box: its face {@code face}) from o along d; −1 when the ray is to walk the tree. Every ray a
+     * list is for lies in its region swept along its box of directions, R + t·D for t ≥ 0: a box
+     * whose faces move linearly in t, tested as the shadow rays' hulls are; its items are sorted by
+     * a lower bound of the ray parameter at which a ray can reach them, so a ray stops at the first
+     * item that starts beyond its nearest hit.
+     */
+    int reflected(int shape, int face, double ox, double oy, double oz, double dx, double dy, double dz) {
+        // Shorter directions would need a longer sweep: walked (mirror directions are unit).
+        if (dx * dx + dy * dy + dz * dz < 0.25) {
+            trialRecord = -1;
             return -1;
         }
-        int grown = grow(shape, light, rec, ox, oy, oz);
-        if (grown < 0) rc[ri + 2] = WALKS + 1;
-        return grown;
+        return lookup(shapes.count() * lights.count + shape, shape, face, -1, ox, oy, oz, dx, dy, dz);
+    }
+
+    /**
+     * The list for a ray of {@code key} from o along d (light ≥ 0: a shadow ray, d unused), or −1.
+     *
+     * <p>A list covers the region its rays came from, not the shape's whole box: the box of the
+     * origins (and directions) of its first {@value #SHADOW_AFTER} rays, which walk on trial, widened
+     * by its extent on each axis. A later ray outside it grows the region (the sides it lies beyond,
+     * by the union's extent or at least a fraction of the shape's) and builds the list again,
+     * {@value #MAX_GROWTHS} times at most; when a list would grow too heavy, the rays outside it
+     * start a new record of the same face with a trial of its own, {@value #MAX_SIBLINGS} at most.
+     */
+    private int lookup(int key, int shape, int face, int light, double ox, double oy, double oz, double dx, double dy, double dz) {
+        trialRecord = -1;
+        if (!lists) return -1;
+        int[] st = state;
+        if (st == null) st = state = new int[shapes.count() * (lights.count + 1)];
+        // A box's faces keep records of their own: the origins on one face lie in one plane.
+        if (shapes.kind[shape] != Shapes.BOX) face = 0;
+        int[] rc = records;
+        double[] r = regions;
+        int trial = -1, growing = -1, siblings = 0, last = -1;
+        for (int s = st[key]; s != 0; s = rc[RECORD * last + 5]) {
+            last = s - 1;
+            int ri = RECORD * last;
+            if (rc[ri + 4] != face) continue;
+            siblings++;
+            int list = rc[ri + 2] - 1;
+            if (list == WALKS) continue;
+            if (list < 0) {
+                trial = last;
+                continue;
+            }
+            int k = 12 * last;
+            if (ox >= r[k] && oy >= r[k + 1] && oz >= r[k + 2] && ox <= r[k + 3] && oy <= r[k + 4] && oz <= r[k + 5]
+                    && dx >= r[k + 6] && dy >= r[k + 7] && dz >= r[k + 8] && dx <= r[k + 9] && dy <= r[k + 10] && dz <= r[k + 11]) {
+                return list;
+            }
+            if (growing < 0 && rc[ri + 3] > 0) growing = last;
+        }
+        if (trial >= 0) {
+            int ri = RECORD * trial;
+            if (rc[ri] < SHADOW_AFTER) {
+                int k = 12 * trial;
+                for (int a = 0; a < 3; a++) {
+                    double o = a == 0 ? ox : a == 1 ? oy : oz, d = a == 0 ? dx : a == 1 ? dy : dz;
+                    r[k + a] = Math.min(r[k + a], o);
+                    r[k + 3 + a] = Math.max(r[k + 3 + a], o);
+                    r[k + 6 + a] = Math.min(r[k + 6 + a], d);
+                    r[k + 9 + a] = Math.max(r[k + 9 + a], d);
+                }
+                trialRecord = trial;
+                return -1;
+            }
+            int built = grow(shape, light, trial, ox, oy, oz, dx, dy, dz);
+            if (built < 0) rc[ri + 2] = WALKS + 1;
+            return built;
+        }
+        if (growing >= 0) {
+            int ri = RECORD * growing;
+            rc[ri + 3]--;
+            int grown = grow(shape, light, growing, ox, oy, oz, dx, dy, dz);
+            if (grown >= 0) return grown;
+            rc[ri + 3] = 0;
+        }
+        if (siblings >= MAX_SIBLINGS || recordCount == MAX_RECORDS) return -1;
+        int added = newRecord(face);
+        if (last < 0) st[key] = 1 + added;
+        else records[RECORD * last + 5] = 1 + added;
+        return lookup(key, shape, face, light, ox, oy, oz, dx, dy, dz);
     }
 
     private int newRecord(int face) {
@@ -310,52 +333,70 @@ final class Candidates {
         records[ri + 3] = MAX_GROWTHS;
         records[ri + 4] = face;
         records[ri + 5] = 0;
-        int k = 6 * rec;
-        regions[k] = regions[k + 1] = regions[k + 2] = Double.POSITIVE_INFINITY;
-        regions[k + 3] = regions[k + 4] = regions[k + 5] = Double.NEGATIVE_INFINITY;
+        int k = 12 * rec;
+        for (int a = 0; a < 3; a++) {
+            regions[k + a] = regions[k + 6 + a] = Double.POSITIVE_INFINITY;
+            regions[k + 3 + a] = regions[k + 9 + a] = Double.NEGATIVE_INFINITY;
+        }
         return rec;
     }
 
     /**
-     * Widens record {@code rec}'s region to take in o, by the union's extent on each axis but never
-     * past the shape's box widened by the tracer's offset (no origin lies outside it), and builds
-     * its list for that region; the new list, or −1 when the pair is to walk (its list would be too
-     * long, cost more than its trial walks did on average, or the pool is full). On −1 the region and
-     * list stay as they were.
+     * Widens record {@code rec}'s region to take in o (and d), never past the shape's box widened by
+     * the tracer's offset (no origin lies outside it), and builds its list for that region; the new
+     * list, or −1 when the ray is to walk (its list would be too long, cost more than its trial
+     * walks did on average, or the pool is full), the region and list then staying as they were.
      */
-    private int grow(int shape, int light, int rec, double ox, double oy, double oz) {
+    private int grow(int shape, int light, int rec, double ox, double oy, double oz, double dx, double dy, double dz) {
         Aabb b = shapes.bounds(shape);
         if (b.isEmpty() || !b.isFinite()) return -1;
         int ri = RECORD * rec, walks = records[ri];
         if (walks == 0) return -1;
         double walkedCost = (double) records[ri + 1] / walks;
         double x0 = b.min().x(), y0 = b.min().y(), z0 = b.min().z(), x1 = b.max().x(), y1 = b.max().y(), z1 = b.max().z();
-        // The shadow ray leaves the hit point by Tracer's offset, at most OFFSET × max(|p|, scale).
+        // A ray leaves the hit point by Tracer's offset, at most OFFSET × max(|p|, scale).
         double big = Math.max(Math.max(Math.max(Math.abs(x0), Math.abs(x1)), Math.max(Math.abs(y0), Math.abs(y1))),
                 Math.max(Math.max(Math.abs(z0), Math.abs(z1)), shapes.scale[shape]));
         double w = 4 * Tracer.OFFSET * big;
-        double[] r = regions, h = hull;
-        int k = 6 * rec;
+        double[] r = regions, h = hull, dir = directions;
+        int k = 12 * rec;
         boolean first = records[ri + 2] == 0;
         for (int a = 0; a < 3; a++) {
-            double o = a == 0 ? ox : a == 1 ? oy : oz, lo = r[k + a], hi = r[k + 3 + a];
             double bl = (a == 0 ? x0 : a == 1 ? y0 : z0) - w, bh = (a == 0 ? x1 : a == 1 ? y1 : z1) + w;
-            // The first region is the trial origins' box widened by its extent on every side; a
-            // growth widens only the sides o lies beyond, by the union's extent or at least 1/32
-            // of the shape's, so that a few growths cover what the rays come from.
-            double extent = Math.max(hi, o) - Math.min(lo, o), step = Math.max(extent, (bh - bl) / 32);
-            double nl = first ? Math.min(lo, o) - extent : o < lo ? o - step : lo;
-            double nh = first ? Math.max(hi, o) + extent : o > hi ? o + step : hi;
-            // Clipped to the widened box, but always holding o (a region must hold the ray's origin).
-            h[a] = Math.min(Math.max(nl, bl), o);
-            h[3 + a] = Math.max(Math.min(nh, bh), o);
+            double o = a == 0 ? ox : a == 1 ? oy : oz, d = a == 0 ? dx : a == 1 ? dy : dz;
+            // The first region is the trial's box widened by its extent on every side; a growth
+            // widens only the sides the ray lies beyond, by the union's extent or at least 1/32 of
+            // the shape's (directions: 1/8), so that a few growths cover what the rays come from.
+            h[a] = widen(first, r[k + a], r[k + 3 + a], o, (bh - bl) / 32, bl, false);
+            h[3 + a] = widen(first, r[k + a], r[k + 3 + a], o, (bh - bl) / 32, bh, true);
+            if (light < 0) {
+                // Unit directions have no component beyond ±1.
+                dir[a] = widen(first, r[k + 6 + a], r[k + 9 + a], d, 0.125, -1, false);
+                dir[3 + a] = widen(first, r[k + 6 + a], r[k + 9 + a], d, 0.125, 1, true);
+            } else {
+                dir[a] = Double.NEGATIVE_INFINITY;
+                dir[3 + a] = Double.POSITIVE_INFINITY;
+            }
         }
-        if (lights.kind[light] == Lights.PARALLEL) {
+        double sweep = 4 * Math.sqrt(3) * (sceneSize + big) + 1;
+        if (light < 0) {
+            // Beyond twice the diameter of the box around every item a ray at least ½ long (as
+            // reflected() takes them) has left it: the far box is the region moved that far.
+            double m = 0;
+            for (int a = 0; a < 3; a++) {
+                h[6 + a] = h[a] + 2 * sweep * dir[a];
+                h[9 + a] = h[3 + a] + 2 * sweep * dir[3 + a];
+                double c = Math.max(Math.abs(dir[a]), Math.abs(dir[3 + a]));
+                m += c * c;
+            }
+            // A ray's parameter t covers at least the distance travelled over the longest direction's length.
+            reach = Math.sqrt(m) * (1 + 1e-9);
+        } else if (lights.kind[light] == Lights.PARALLEL) {
             // Every shadow ray runs along the light's direction w to infinity: the region box swept
             // along w. Swept by more than the diameter of the box around every item, nothing lies
             // beyond, so its far end may be a box moved that far.
             double wx = lights.x[light], wy = lights.y[light], wz = lights.z[light];
-            double far = (4 * Math.sqrt(3) * (sceneSize + big) + 1) / Math.sqrt(wx * wx + wy * wy + wz * wz);
+            double far = sweep / Math.sqrt(wx * wx + wy * wy + wz * wz);
             for (int a = 0; a < 3; a++) {
                 double wa = a == 0 ? wx : a == 1 ? wy : wz;
                 h[6 + a] = h[a] + far * wa;
@@ -367,32 +408,48 @@ final class Candidates {
             h[8] = h[11] = lights.z[light];
         }
         int at = poolSize;
-        if (at + 2 + SHADOW_LIMIT > MAX_POOL) return -1;
-        if (pool.length < at + 2 + SHADOW_LIMIT) pool = Arrays.copyOf(pool, Math.max(2 * pool.length, at + 2 + SHADOW_LIMIT));
-        int n = collectInto(false, pool, at + 2, SHADOW_LIMIT, null);
+        if (at + 1 + SHADOW_LIMIT > MAX_POOL) return -1;
+        if (pool.length < at + 1 + SHADOW_LIMIT) {
+            int size = Math.max(2 * pool.length, at + 1 + SHADOW_LIMIT);
+            pool = Arrays.copyOf(pool, size);
+            near = Arrays.copyOf(near, size);
+        }
+        int n = collectInto(false, pool, at + 1, SHADOW_LIMIT, light < 0 ? near : null);
         if (n < 0) return -1;
         double cost = 0;
-        for (int i = at + 2; i < at + 2 + n; i++) cost += weight(pool[i]);
+        for (int i = at + 1; i < at + 1 + n; i++) cost += weight(pool[i]);
         if (cost > walkedCost) return -1;
+        if (light < 0) sortByNear(pool, near, at + 1, n);
         pool[at] = n;
-        pool[at + 1] = rec;
         System.arraycopy(h, 0, r, k, 6);
-        poolSize = at + 2 + n;
+        System.arraycopy(dir, 0, r, k + 6, 6);
+        poolSize = at + 1 + n;
         records[ri + 2] = at + 1;
         return at;
     }
 
     /**
-     * Records what the walk of the shadow ray the last {@link #shadow} call turned down cost, while
-     * its pair is on trial: the walks it took (0 or 1), and their nodes opened plus their items
-     * tested, weighed by {@link #weight} (a node's two box tests cost about a sphere's test).
+     * One side of a widened interval: the trial's [lo, hi] widened by its extent on both sides when
+     * {@code first}, else by at least {@code least} on the side v lies beyond; clipped to
+     * {@code bound}, but always holding v (a region must hold the ray it is built for).
+     */
+    private static double widen(boolean first, double lo, double hi, double v, double least, double bound, boolean upper) {
+        double extent = Math.max(hi, v) - Math.min(lo, v), step = Math.max(extent, least);
+        if (upper) return Math.max(Math.min(first ? Math.max(hi, v) + extent : v > hi ? v + step : hi, bound), v);
+        return Math.min(Math.max(first ? Math.min(lo, v) - extent : v < lo ? v - step : lo, bound), v);
+    }
+
+    /**
+     * Records what the walk of the ray the last {@link #shadow} or {@link #reflected} call turned
+     * down cost, while its record is on trial: the walks it took (0 or 1), and their nodes opened plus
+     * their items tested, weighed by {@link #weight} (a node's two box tests cost about a sphere's test).
      */
     void walked(int walks, int cost) {
-        if (trialKey < 0 || walks == 0) return;
-        int ri = RECORD * trialKey;
+        if (trialRecord < 0 || walks == 0) return;
+        int ri = RECORD * trialRecord;
         records[ri] += walks;
         records[ri + 1] = (int) Math.min((long) records[ri + 1] + cost, Integer.MAX_VALUE);
-        trialKey = -1;
+        trialRecord = -1;
     }
 
     /**
@@ -401,6 +458,36 @@ final class Candidates {
      */
     int weight(int item) {
         return item < 0 ? HEAVY : shapes.kind[item] == Shapes.MESH ? HEAVY : 1;
+    }
+
+    /** Sorts {@code count} items from {@code at} by their lower bounds (lists are short); ties keep the leaves' order. */
+    private static void sortByNear(int[] items, double[] near, int at, int count) {
+        for (int k = at + 1; k < at + count; k++) {
+            double t = near[k];
+            int item = items[k];
+            int m = k - 1;
+            while (m >= at && near[m] > t) {
+                near[m + 1] = near[m];
+                items[m + 1] = items[m];
+                m--;
+            }
+            near[m + 1] = t;
+            items[m + 1] = item;
+        }
+    }
+
+    /**
+     * A lower bound of the parameter t at which a ray of the swept region being built (origin in
+     * the region box of {@link #hull}, direction at most {@link #reach} long) reaches the box.
+     */
+    private double reached(double x0, double y0, double z0, double x1, double y1, double z1) {
+        double[] h = hull;
+        double dx = Math.max(0, Math.max(x0 - h[3], h[0] - x1));
+        double dy = Math.max(0, Math.max(y0 - h[4], h[1] - y1));
+        double dz = Math.max(0, Math.max(z0 - h[5], h[2] - z1));
+        double d = Math.sqrt(dx * dx + dy * dy + dz * dz);
+        // Hits of grazing rays are rounded by up to about √ε of their distance.
+        return (d - 1e-6 * d - WIDEN * sceneSize) / reach;
     }
 
     /**
@@ -492,7 +579,7 @@ final class Candidates {
                         if (!(frustum ? inFrustum(x0, y0, z0, x1, y1, z1) : inHull(x0, y0, z0, x1, y1, z1))) continue;
                     }
                     if (n == limit) return -1;
-                    if (near != null) near[at + n] = nearest(x0, y0, z0, x1, y1, z1);
+                    if (near != null) near[at + n] = frustum ? nearest(x0, y0, z0, x1, y1, z1) : reached(x0, y0, z0, x1, y1, z1);
                     out[at + n++] = item;
                 }
                 node = POP;

@@ -53,6 +53,8 @@ final class Tracer {
     int shading = NONE;
     /** The face of {@link #shading}'s surface being shaded. */
     int shadingFace;
+    /** Set before a mirror-reflected ray is traced: the shape (and face) it leaves, whose list of {@link #candidates} it may take; else {@link #NONE}. */
+    private int reflectedFrom = NONE, reflectedFace;
     /** Shadow rays that walked the BVH, and the items they tested (weighed as {@link Candidates#weight}). */
     private int walks, tested;
     /** The item that made the last {@link #blocked} true. */
@@ -123,7 +125,11 @@ final class Tracer {
             double wr, double wg, double wb) {
         boolean block = blockRay;
         blockRay = false;
-        if (!(block ? blockHit(ox, oy, oz, dx, dy, dz) : closestHit(ox, oy, oz, dx, dy, dz, Double.POSITIVE_INFINITY))) {
+        int from = reflectedFrom;
+        reflectedFrom = NONE;
+        if (!(block ? blockHit(ox, oy, oz, dx, dy, dz)
+                : from != NONE ? reflectedHit(from, reflectedFace, ox, oy, oz, dx, dy, dz)
+                : closestHit(ox, oy, oz, dx, dy, dz, Double.POSITIVE_INFINITY))) {
             background.shade(dx, dy, dz, colour);
             accR += wr * colour[0];
             accG += wg * colour[1];
@@ -223,6 +229,10 @@ final class Tracer {
         if (kr > 0) {
             if (rough == 0) {
                 reflectedRays++;
+                if (candidates != null) {
+                    reflectedFrom = s;
+                    reflectedFace = hit.face;
+                }
                 trace(px + delta * nx, py + delta * ny, pz + delta * nz, rdx, rdy, rdz, depth - 1, wr * kr, wg * kr, wb * kr);
             } else {
                 spawn(px, py, pz, rdx, rdy, rdz, nx, ny, nz, delta, depth, rough, samples, wr * kr, wg * kr, wb * kr);
@@ -424,6 +434,11 @@ final class Tracer {
 
     /** The nearest surface with 0 < t < tMax into {@link #hit}; {@link #ray} keeps the ray for the surface query. */
     boolean closestHit(double ox, double oy, double oz, double dx, double dy, double dz, double tMax) {
+        return closestHit(ox, oy, oz, dx, dy, dz, tMax, false);
+    }
+
+    /** {@link #closestHit}; with {@code count}, adding the items it tests to {@link #tested}, weighed as {@link Candidates#weight}. */
+    private boolean closestHit(double ox, double oy, double oz, double dx, double dy, double dz, double tMax, boolean count) {
         ray.set(ox, oy, oz, dx, dy, dz);
         boolean found = unboundedHit(tMax);
         if (found) tMax = hit.t;
@@ -440,6 +455,7 @@ final class Tracer {
         if (!walk.start(bvh, ray, 0, tMax)) return found;
         for (int leaf = walk.nextNearest(tMax); leaf != BvhWalker.END; leaf = walk.nextNearest(tMax)) {
             for (int k = Bvh.leafFirst(leaf), end = k + Bvh.leafCount(leaf); k < end; k++) {
+                if (count) tested += candidates.weight(items[k]);
                 if (hitItem(items[k], tMax)) {
                     found = true;
                     tMax = hit.t;
@@ -476,6 +492,36 @@ final class Tracer {
         double[] near = c.blockNear;
         for (int k = 0, n = c.blockCount; k < n && near[k] < tMax; k++) {
             if (hitItem(list[k], tMax)) {
+                found = true;
+                tMax = hit.t;
+            }
+        }
+        return found;
+    }
+
+    /**
+     * {@link #closestHit} (tMax = +∞) of a mirror-reflected ray leaving {@code shape}'s face
+     * {@code face}: through the list of {@link #candidates} for it when there is one (every item the
+     * ray can meet, nearest lower bound first, so the same hit is found; where two items give exactly
+     * the same t, the one listed first), else by the walk, whose cost the list's trial is told.
+     */
+    boolean reflectedHit(int shape, int face, double ox, double oy, double oz, double dx, double dy, double dz) {
+        Candidates c = candidates;
+        int list = c.reflected(shape, face, ox, oy, oz, dx, dy, dz);
+        if (list < 0) {
+            int steps = walker.nearestSteps, tested = this.tested;
+            boolean found = closestHit(ox, oy, oz, dx, dy, dz, Double.POSITIVE_INFINITY, true);
+            c.walked(1, walker.nearestSteps - steps + this.tested - tested);
+            return found;
+        }
+        ray.set(ox, oy, oz, dx, dy, dz);
+        double tMax = Double.POSITIVE_INFINITY;
+        boolean found = unboundedHit(tMax);
+        if (found) tMax = hit.t;
+        int[] items = c.pool;
+        double[] near = c.near;
+        for (int k = list + 1, end = k + items[list]; k < end && near[k] < tMax; k++) {
+            if (hitItem(items[k], tMax)) {
                 found = true;
                 tMax = hit.t;
             }
@@ -552,7 +598,7 @@ final class Tracer {
         }
         if (list >= 0) {
             int[] pool = candidates.pool;
-            for (int k = list + 2, end = k + pool[list]; k < end; k++) {
+            for (int k = list + 1, end = k + pool[list]; k < end; k++) {
                 product *= itemTransmittance(pool[k], tMax);
                 if (product == 0) return blockedBy(light, pool[k]);
             }
