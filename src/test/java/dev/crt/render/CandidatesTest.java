@@ -275,6 +275,86 @@ class CandidatesTest {
     }
 
     @Test
+    void aReflectedRaysListGivesEachMirrorRayTheHitOfItsOwnWalk() {
+        checkReflected(new SplittableRandom(46), false);
+        checkReflected(new SplittableRandom(47), true);
+    }
+
+    /**
+     * Mirror-reflected rays, three bounces deep, from the surface points camera rays find in random
+     * fields (or fields of columns seen from above, with {@code columns}): each ray once through its
+     * (shape, face) list and once by its own walk, the same t, shape, face and flip but where two
+     * surfaces are within rounding of each other.
+     */
+    private static void checkReflected(SplittableRandom r, boolean columns) {
+        int listed = 0, rays = 0, hits = 0, ties = 0;
+        double[] d = new double[3];
+        SurfacePoint p = new SurfacePoint();
+        for (int scene = 0; scene < 16; scene++) {
+            Camera eye = columns ? camera(v(r.nextGaussian() * 2, 1 + r.nextDouble() * 2, 4), v(r.nextGaussian(), 0, 0), 40 + r.nextInt(40))
+                    : aimed(r);
+            Settings s = settings(eye, List.of(), Background.BLACK, 64, 48);
+            List<Entity> es = columns ? columns(r) : field(r, false);
+            Tracer listing = tracer(es, s), walking = tracer(es, s);
+            CameraRays camera = new CameraRays(s.camera(), 64, 48);
+            for (int k = 0; k < 3000; k++) {
+                camera.direction(r.nextInt(64), r.nextInt(48), r.nextDouble(), r.nextDouble(), d);
+                double ox = camera.px, oy = camera.py, oz = camera.pz, dx = d[0], dy = d[1], dz = d[2];
+                for (int bounce = 0; bounce < 3; bounce++) {
+                    if (!walking.closestHit(ox, oy, oz, dx, dy, dz, Double.POSITIVE_INFINITY)) break;
+                    // The mirror ray as Tracer.trace casts it: off the surface along the ray-facing geometric normal.
+                    int shape = walking.hit.shape, face = walking.hit.face;
+                    walking.shapes().surface(shape, face, walking.hit.t, walking.ray, p);
+                    double nx = p.nx, ny = p.ny, nz = p.nz;
+                    if (walking.hit.flip) {
+                        nx = -nx;
+                        ny = -ny;
+                        nz = -nz;
+                    }
+                    double dn = dx * nx + dy * ny + dz * nz;
+                    if (dn > 0) {
+                        nx = -nx;
+                        ny = -ny;
+                        nz = -nz;
+                        dn = -dn;
+                    }
+                    double delta = Tracer.OFFSET * Math.max(Math.max(Math.abs(p.px), Math.abs(p.py)),
+                            Math.max(Math.abs(p.pz), walking.shapes().scale[shape]));
+                    ox = p.px + delta * nx;
+                    oy = p.py + delta * ny;
+                    oz = p.pz + delta * nz;
+                    dx -= 2 * dn * nx;
+                    dy -= 2 * dn * ny;
+                    dz -= 2 * dn * nz;
+                    boolean lone = walking.closestHit(ox, oy, oz, dx, dy, dz, Double.POSITIVE_INFINITY);
+                    double tLone = walking.hit.t;
+                    boolean list = listing.candidates.reflected(shape, face, ox, oy, oz, dx, dy, dz) >= 0;
+                    boolean fast = listing.reflectedHit(shape, face, ox, oy, oz, dx, dy, dz);
+                    String what = "scene " + scene + ", ray " + k + ", bounce " + bounce + " from shape " + shape;
+                    rays++;
+                    if (list) listed++;
+                    assertThat(fast).as(what).isEqualTo(lone);
+                    if (!lone) break;
+                    hits++;
+                    if (listing.hit.t != tLone || listing.hit.shape != walking.hit.shape) {
+                        assertThat(listing.hit.t).as(what).isCloseTo(tLone, org.assertj.core.data.Offset.offset(1e-12 * tLone));
+                        ties++;
+                        continue;
+                    }
+                    assertThat(listing.hit.face).as(what).isEqualTo(walking.hit.face);
+                    assertThat(listing.hit.flip).as(what).isEqualTo(walking.hit.flip);
+                }
+            }
+        }
+        System.out.printf("reflected lists%s: %d rays, %d listed, %d hits, %d ties%n", columns ? " (columns)" : "", rays, listed,
+                hits, ties);
+        assertThat(ties).isLessThan(hits / 200 + 1);
+        // Random fields scatter mirror rays every way: few of their lists pay; a field of columns' do.
+        assertThat(listed).isGreaterThan(rays / (columns ? 4 : 40));
+        assertThat(hits).isGreaterThan(rays / 10);
+    }
+
+    @Test
     void listedRaysAllocateNothingOnceTheirListsAreBuilt() {
         SplittableRandom r = new SplittableRandom(7);
         List<Entity> es = new ArrayList<>();
@@ -298,18 +378,20 @@ class CandidatesTest {
                     camera.direction(i, j, 0.5, 0.5, d);
                     if (!t.candidates.block(camera, i, j)) continue;
                     if (!t.blockHit(camera.px, camera.py, camera.pz, d[0], d[1], d[2])) continue;
-                    int shape = t.hit.shape;
+                    int shape = t.hit.shape, face = t.hit.face;
                     double hx = camera.px + t.hit.t * d[0], hy = camera.py + t.hit.t * d[1], hz = camera.pz + t.hit.t * d[2];
                     t.shading = shape;
                     t.shadingFace = t.hit.face;
                     if (pass == 5 && t.candidates.shadow(shape, t.hit.face, 0, hx, hy, hz) >= 0) listed++;
                     t.shadowTo(hx, hy, hz, light.x(), light.y(), light.z(), 0, 0);
+                    // A ray leaving the hit, as a mirror ray would take its list (or walk).
+                    t.reflectedHit(shape, face, hx, hy, hz, d[0], -d[1], d[2]);
                 }
             }
-            // A pair's list is built after its fourth walk: by the last pass every list is built.
+            // A pair's list is built after its fourth walk and grown as rays outside it come: by the last pass every list is built.
             if (pass == 5) allocated = threads.getThreadAllocatedBytes(id) - before;
         }
         assertThat(listed).isGreaterThan(100);
-        assertThat(allocated).as("bytes allocated by %d listed shadow rays and their blocks' camera rays", listed).isZero();
+        assertThat(allocated).as("bytes allocated by %d listed shadow rays, their blocks' camera rays and reflected rays", listed).isZero();
     }
 }
