@@ -104,6 +104,8 @@ final class Candidates {
     /** The direction box of the reflected-ray list being built, and the largest length of a direction in it. */
     private final double[] directions = new double[6];
     private double reach;
+    /** Per axis, +1 when every ray of the list being built moves up along it, −1 when every one moves down, else 0. */
+    private final int[] moving = new int[3];
     /** The region box and the far box of the shadow list being built. */
     private final double[] hull = new double[12];
 
@@ -407,6 +409,22 @@ final class Candidates {
             h[7] = h[10] = lights.y[light];
             h[8] = h[11] = lights.z[light];
         }
+        // Per axis, whether every ray of the region moves up along it (+1) or down (−1).
+        for (int a = 0; a < 3; a++) {
+            double lo, hi;
+            if (light < 0) {
+                lo = dir[a];
+                hi = dir[3 + a];
+            } else if (lights.kind[light] == Lights.PARALLEL) {
+                lo = hi = a == 0 ? lights.x[light] : a == 1 ? lights.y[light] : lights.z[light];
+            } else {
+                // Towards the light's point q: q − o over o in the region.
+                double q = a == 0 ? lights.x[light] : a == 1 ? lights.y[light] : lights.z[light];
+                lo = q - h[3 + a];
+                hi = q - h[a];
+            }
+            moving[a] = lo > 0 ? 1 : hi < 0 ? -1 : 0;
+        }
         int at = poolSize;
         if (at + 1 + SHADOW_LIMIT > MAX_POOL) return -1;
         if (pool.length < at + 1 + SHADOW_LIMIT) {
@@ -488,6 +506,22 @@ final class Candidates {
         double d = Math.sqrt(dx * dx + dy * dy + dz * dz);
         // Hits of grazing rays are rounded by up to about √ε of their distance.
         return (d - 1e-6 * d - WIDEN * sceneSize) / reach;
+    }
+
+    /**
+     * Whether every ray of the list being built starts beyond the box on some axis (the region box
+     * of {@link #hull} wholly past it) and moves away from it along that axis. Such a ray's slab
+     * distances to that axis's two planes are both negative (their signs are exact), so the box's
+     * own test (a slab test) finds no crossing at t > 0: its factor is 1 and it is never the
+     * nearest hit. It tells apart what the widened hull test cannot: a box the region touches,
+     * such as the shape's own box under the face the rays leave, or its neighbours' of the same height.
+     */
+    private boolean receding(double x0, double y0, double z0, double x1, double y1, double z1) {
+        double[] h = hull;
+        int[] m = moving;
+        return m[0] > 0 && h[0] > x1 || m[0] < 0 && h[3] < x0
+                || m[1] > 0 && h[1] > y1 || m[1] < 0 && h[4] < y0
+                || m[2] > 0 && h[2] > z1 || m[2] < 0 && h[5] < z0;
     }
 
     /**
@@ -577,6 +611,7 @@ final class Candidates {
                             z1 = d[o + 5];
                         }
                         if (!(frustum ? inFrustum(x0, y0, z0, x1, y1, z1) : inHull(x0, y0, z0, x1, y1, z1))) continue;
+                        if (!frustum && kind == Shapes.BOX && receding(x0, y0, z0, x1, y1, z1)) continue;
                     }
                     if (n == limit) return -1;
                     if (near != null) near[at + n] = frustum ? nearest(x0, y0, z0, x1, y1, z1) : reached(x0, y0, z0, x1, y1, z1);
