@@ -99,6 +99,12 @@ final class Candidates {
     int[] pool = new int[1024];
     double[] near = new double[1024];
     private int poolSize;
+    /**
+     * Per light (and one more for reflected rays): the key and record whose list the last listed
+     * ray took, tested first, since neighbouring rays mostly leave the same face (only records with a
+     * list are cached, so its list field is one).
+     */
+    private final int[] cacheKey, cacheRecord;
     /** The record whose ray is walking on trial, or −1. */
     private int trialRecord = -1;
     /** The direction box of the reflected-ray list being built, and the largest length of a direction in it. */
@@ -120,6 +126,9 @@ final class Candidates {
         for (double v : bvh.root) size = Math.max(size, Math.abs(v));
         sceneSize = size;
         lists = (long) shapes.count() * (lights.count + 1) <= MAX_PAIRS;
+        cacheKey = new int[lights.count + 1];
+        cacheRecord = new int[lights.count + 1];
+        Arrays.fill(cacheKey, -1);
     }
 
     /**
@@ -271,6 +280,14 @@ final class Candidates {
         if (shapes.kind[shape] != Shapes.BOX) face = 0;
         int[] rc = records;
         double[] r = regions;
+        int slot = light < 0 ? lights.count : light, cached = cacheRecord[slot];
+        if (cacheKey[slot] == key && rc[RECORD * cached + 4] == face) {
+            int k = 12 * cached;
+            if (ox >= r[k] && oy >= r[k + 1] && oz >= r[k + 2] && ox <= r[k + 3] && oy <= r[k + 4] && oz <= r[k + 5]
+                    && dx >= r[k + 6] && dy >= r[k + 7] && dz >= r[k + 8] && dx <= r[k + 9] && dy <= r[k + 10] && dz <= r[k + 11]) {
+                return rc[RECORD * cached + 2] - 1;
+            }
+        }
         int trial = -1, growing = -1, siblings = 0, last = -1;
         for (int s = st[key]; s != 0; s = rc[RECORD * last + 5]) {
             last = s - 1;
@@ -286,6 +303,8 @@ final class Candidates {
             int k = 12 * last;
             if (ox >= r[k] && oy >= r[k + 1] && oz >= r[k + 2] && ox <= r[k + 3] && oy <= r[k + 4] && oz <= r[k + 5]
                     && dx >= r[k + 6] && dy >= r[k + 7] && dz >= r[k + 8] && dx <= r[k + 9] && dy <= r[k + 10] && dz <= r[k + 11]) {
+                cacheKey[slot] = key;
+                cacheRecord[slot] = last;
                 return list;
             }
             if (growing < 0 && rc[ri + 3] > 0) growing = last;
@@ -312,7 +331,11 @@ final class Candidates {
             int ri = RECORD * growing;
             rc[ri + 3]--;
             int grown = grow(shape, light, growing, ox, oy, oz, dx, dy, dz);
-            if (grown >= 0) return grown;
+            if (grown >= 0) {
+                cacheKey[slot] = key;
+                cacheRecord[slot] = growing;
+                return grown;
+            }
             rc[ri + 3] = 0;
         }
         if (siblings >= MAX_SIBLINGS || recordCount == MAX_RECORDS) return -1;
