@@ -25,6 +25,12 @@ final class Candidates {
     static final int SHADOW_LIMIT = 48;
     /** Shadow rays a (shape, light) pair casts by the walk before its list is built: a shape lit once does not repay a list. */
     static final int SHADOW_AFTER = 4;
+    /**
+     * Reflected rays a (shape, face) record walks before its list is built: their lists are dearer
+     * to build (a sweep to the scene's end) and a face seen by few rays (one sample a pixel) does not
+     * repay one (measured on the box field, section 28).
+     */
+    static final int REFLECTED_AFTER = 16;
     /** Relative widening of every region test, far above the rounding of rays, hits and the tests themselves. */
     private static final double WIDEN = 1e-9;
     /** The weight of a CSG tree or a mesh against a plain shape's test, in {@link #weight}. */
@@ -60,25 +66,29 @@ final class Candidates {
      * thread (a million spheres under four lights still fit).
      */
     private static final long MAX_PAIRS = 1L << 22;
-    /** At most this many records a thread (120 bytes each); rays they would cover keep the walk. */
+    /** At most this many records a thread (about 130 bytes each, heads included); rays they would cover keep the walk. */
     static final int MAX_RECORDS = 1 << 17;
     /** At most this many ints (and as many bounds) of lists a thread (48 MB); once full, no more lists are built. */
     static final int MAX_POOL = 1 << 22;
     /** Records a key keeps per face: regions apart on one face (a list that could not grow) get records of their own. */
     static final int MAX_SIBLINGS = 4;
     /** A record's region grows to take in a ray outside it at most this many times. */
-    static final int MAX_GROWTHS = 12;
+    static final int MAX_GROWTHS = 4;
     /** Whether the scene has few enough pairs for lists. */
     private final boolean lists;
     /**
-     * Per key, 0 unseen or 1 + its first record: key shape × lights + light for the shadow rays of
-     * (shape, light), shapes × lights + shape for the mirror-reflected rays leaving the shape.
+     * Per key, 0 unseen or 1 + the index of its heads in {@link #faceHeads}: key shape × lights +
+     * light for the shadow rays of (shape, light), shapes × lights + shape for the mirror-reflected
+     * rays leaving the shape.
      */
     private int[] state;
+    /** Per key and face (six for a box, one for other shapes): 0 or 1 + the first of its records; at most {@link #MAX_RECORDS}. */
+    private int[] faceHeads = new int[256];
+    private int headCount;
     /**
      * Per record, {@value #RECORD} ints: the walks taken on trial, their cost (see {@link #walked}),
      * 1 + its list's index in {@link #pool} (0: none yet, −1: walk), the growths left, the face (of
-     * a box; else 0), 1 + the next record of the key (0: none); and 12 doubles in {@link #regions}.
+     * a box; else 0), 1 + the next record of the key and face (0: none); and 12 doubles in {@link #regions}.
      */
     private int[] records = new int[RECORD * 64];
     /** Ints per record. */
@@ -288,11 +298,21 @@ final class Candidates {
                 return rc[RECORD * cached + 2] - 1;
             }
         }
+        int heads = st[key] - 1;
+        if (heads < 0) {
+            // The heads of the key's lists of records, one per face of a box.
+            heads = headCount;
+            int n = shapes.kind[shape] == Shapes.BOX ? 6 : 1;
+            if (heads + n > MAX_RECORDS) return -1;
+            if (faceHeads.length < heads + n) faceHeads = Arrays.copyOf(faceHeads, 2 * faceHeads.length);
+            Arrays.fill(faceHeads, heads, heads + n, 0);
+            headCount += n;
+            st[key] = 1 + heads;
+        }
         int trial = -1, growing = -1, siblings = 0, last = -1;
-        for (int s = st[key]; s != 0; s = rc[RECORD * last + 5]) {
+        for (int s = faceHeads[heads + face]; s != 0; s = rc[RECORD * last + 5]) {
             last = s - 1;
             int ri = RECORD * last;
-            if (rc[ri + 4] != face) continue;
             siblings++;
             int list = rc[ri + 2] - 1;
             if (list == WALKS) continue;
@@ -311,7 +331,7 @@ final class Candidates {
         }
         if (trial >= 0) {
             int ri = RECORD * trial;
-            if (rc[ri] < SHADOW_AFTER) {
+            if (rc[ri] < (light < 0 ? REFLECTED_AFTER : SHADOW_AFTER)) {
                 int k = 12 * trial;
                 for (int a = 0; a < 3; a++) {
                     double o = a == 0 ? ox : a == 1 ? oy : oz, d = a == 0 ? dx : a == 1 ? dy : dz;
@@ -340,7 +360,7 @@ final class Candidates {
         }
         if (siblings >= MAX_SIBLINGS || recordCount == MAX_RECORDS) return -1;
         int added = newRecord(face);
-        if (last < 0) st[key] = 1 + added;
+        if (last < 0) faceHeads[heads + face] = 1 + added;
         else records[RECORD * last + 5] = 1 + added;
         return lookup(key, shape, face, light, ox, oy, oz, dx, dy, dz);
     }
@@ -455,11 +475,15 @@ final class Candidates {
             pool = Arrays.copyOf(pool, size);
             near = Arrays.copyOf(near, size);
         }
-        int n = collectInto(false, pool, at + 1, SHADOW_LIMIT, light < 0 ? near : null);
+        // A reflected-ray list is tested item by item where the walk tests two boxes a step, and a
+        // mirror field's rays fan out: it must weigh half its trial walks (measured, section 28).
+        double bound = light < 0 ? walkedCost / 2 : walkedCost;
+        // Every item weighs at least 1: the walk stops as soon as the list is too heavy.
+        int n = collectInto(false, pool, at + 1, (int) Math.min(SHADOW_LIMIT, bound), light < 0 ? near : null);
         if (n < 0) return -1;
         double cost = 0;
         for (int i = at + 1; i < at + 1 + n; i++) cost += weight(pool[i]);
-        if (cost > walkedCost) return -1;
+        if (cost > bound) return -1;
         if (light < 0) sortByNear(pool, near, at + 1, n);
         pool[at] = n;
         System.arraycopy(h, 0, r, k, 6);
@@ -478,6 +502,11 @@ final class Candidates {
         double extent = Math.max(hi, v) - Math.min(lo, v), step = Math.max(extent, least);
         if (upper) return Math.max(Math.min(first ? Math.max(hi, v) + extent : v > hi ? v + step : hi, bound), v);
         return Math.min(Math.max(first ? Math.min(lo, v) - extent : v < lo ? v - step : lo, bound), v);
+    }
+
+    /** Whether the ray the last {@link #shadow} or {@link #reflected} call turned down walks on trial (its cost is wanted). */
+    boolean onTrial() {
+        return trialRecord >= 0;
     }
 
     /**

@@ -510,7 +510,7 @@ final class Tracer {
         int list = c.reflected(shape, face, ox, oy, oz, dx, dy, dz);
         if (list < 0) {
             int steps = walker.nearestSteps, tested = this.tested;
-            boolean found = closestHit(ox, oy, oz, dx, dy, dz, Double.POSITIVE_INFINITY, true);
+            boolean found = closestHit(ox, oy, oz, dx, dy, dz, Double.POSITIVE_INFINITY, c.onTrial());
             c.walked(1, walker.nearestSteps - steps + this.tested - tested);
             return found;
         }
