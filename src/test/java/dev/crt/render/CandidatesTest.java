@@ -327,6 +327,14 @@ class CandidatesTest {
                     dx -= 2 * dn * nx;
                     dy -= 2 * dn * ny;
                     dz -= 2 * dn * nz;
+                    if (k % 8 == 0) {
+                        // Now and then a ray from the same point in a direction near the mirror's, off
+                        // the surface: a list must not take a ray whose direction lies outside its own.
+                        double gx = dx + 0.3 * r.nextGaussian(), gy = dy + 0.3 * r.nextGaussian(), gz = dz + 0.3 * r.nextGaussian();
+                        double g = Math.sqrt(gx * gx + gy * gy + gz * gz), gn = gx * nx + gy * ny + gz * nz;
+                        if (gn < 0) g = -g;
+                        sameHit(listing, walking, shape, face, ox, oy, oz, gx / g, gy / g, gz / g, "scene " + scene + ", ray " + k);
+                    }
                     boolean lone = walking.closestHit(ox, oy, oz, dx, dy, dz, Double.POSITIVE_INFINITY);
                     double tLone = walking.hit.t;
                     boolean list = listing.candidates.reflected(shape, face, ox, oy, oz, dx, dy, dz) >= 0;
@@ -353,6 +361,20 @@ class CandidatesTest {
         // Random fields scatter mirror rays every way: few of their lists pay; a field of columns' do.
         assertThat(listed).isGreaterThan(rays / (columns ? 10 : 60));
         assertThat(hits).isGreaterThan(rays / 10);
+    }
+
+    /** The ray through {@code listing}'s reflected-ray list (or walk) and by {@code walking}'s walk: the same hit, ties aside. */
+    private static void sameHit(Tracer listing, Tracer walking, int shape, int face, double ox, double oy, double oz, double dx,
+            double dy, double dz, String what) {
+        boolean lone = walking.closestHit(ox, oy, oz, dx, dy, dz, Double.POSITIVE_INFINITY);
+        boolean fast = listing.reflectedHit(shape, face, ox, oy, oz, dx, dy, dz);
+        assertThat(fast).as(what).isEqualTo(lone);
+        if (!lone || listing.hit.t != walking.hit.t) {
+            if (lone) assertThat(listing.hit.t).as(what).isCloseTo(walking.hit.t, org.assertj.core.data.Offset.offset(1e-12 * walking.hit.t));
+            return;
+        }
+        assertThat(listing.hit.shape).as(what).isEqualTo(walking.hit.shape);
+        assertThat(listing.hit.face).as(what).isEqualTo(walking.hit.face);
     }
 
     @Test
