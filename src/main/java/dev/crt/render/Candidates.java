@@ -6,15 +6,16 @@ import java.util.Arrays;
 /**
  * Short lists of the items a whole bundle of rays can meet, each found by one conservative walk of
  * the BVH, so that every ray of the bundle tests the list instead of walking the tree itself: per
- * {@value #BLOCK} × {@value #BLOCK} block of the image for pinhole camera rays, and per (shape, point
- * light) for the shadow rays leaving that shape's surface towards that light. One per render thread.
+ * {@value #BLOCK} × {@value #BLOCK} block of the image for camera rays, per (shape, light) (a box:
+ * per face) for the shadow rays leaving that surface towards that light, and per (shape, face) for
+ * the mirror-reflected rays leaving it. One per render thread.
  *
- * <p>A list holds every item whose box (or, for a sphere, whose own box) meets the region all the
- * bundle's rays lie in, widened far beyond rounding, so a ray's hits among the listed items are
- * all its hits in the tree. Shadow lists keep the leaves' depth-first order, the order
+ * <p>A list holds every item whose box (or, for a sphere or a box, whose own box) meets the region
+ * all the bundle's rays lie in, widened far beyond rounding, so a ray's hits among the listed items
+ * are all its hits in the tree. Shadow lists keep the leaves' depth-first order, the order
  * {@link BvhWalker#nextAny} meets them in, so a product of transmittances is taken in the same
- * order to the bit; block lists are sorted by a lower bound of the distance to each item, so a ray
- * stops at the first item that starts beyond its nearest hit.
+ * order to the bit; block and reflected-ray lists are sorted by a lower bound of the ray parameter
+ * at each item, so a ray stops at the first item that starts beyond its nearest hit.
  */
 final class Candidates {
     /** Side of a block of pixels sharing one list of primary candidates (fixed in image coordinates). */
@@ -66,7 +67,7 @@ final class Candidates {
      * thread (a million spheres under four lights still fit).
      */
     private static final long MAX_PAIRS = 1L << 22;
-    /** At most this many records a thread (about 130 bytes each, heads included); rays they would cover keep the walk. */
+    /** At most this many records a thread (120 bytes each); rays they would cover keep the walk. */
     static final int MAX_RECORDS = 1 << 17;
     /** At most this many ints (and as many bounds) of lists a thread (48 MB); once full, no more lists are built. */
     static final int MAX_POOL = 1 << 22;
