@@ -71,9 +71,12 @@ final class BvhWalker {
         return true;
     }
 
+    /** Inner nodes {@link #nextNearest} has opened, counted for ever: what a reflected-ray list is weighed against. */
+    int nearestSteps;
+
     /** The next leaf, nearest child first, skipping boxes entered at or beyond {@code tMax}; {@link #END} when done. */
     int nextNearest(double tMax) {
-        int node = this.node, top = this.top;
+        int node = this.node, top = this.top, steps = 0;
         int[] stack = this.stack, children = this.children;
         double[] stackT = this.stackT;
         double[] b = this.boxes;
@@ -86,6 +89,7 @@ final class BvhWalker {
                     if (top == 0) {
                         this.node = POP;
                         this.top = 0;
+                        nearestSteps += steps;
                         return END;
                     }
                     node = stack[--top];
@@ -94,8 +98,10 @@ final class BvhWalker {
             if (Bvh.isLeaf(node)) {
                 this.node = POP;
                 this.top = top;
+                nearestSteps += steps;
                 return node;
             }
+            steps++;
             int k = Bvh.NODE * node;
             double ln = tMin, lf = tMax, rn = tMin, rf = tMax, t;
             if ((t = (b[k + nx] - ox) * ix) > ln) ln = t;

@@ -6,15 +6,16 @@ import java.util.Arrays;
 /**
  * Short lists of the items a whole bundle of rays can meet, each found by one conservative walk of
  * the BVH, so that every ray of the bundle tests the list instead of walking the tree itself: per
- * {@value #BLOCK} × {@value #BLOCK} block of the image for pinhole camera rays, and per (shape, point
- * light) for the shadow rays leaving that shape's surface towards that light. One per render thread.
+ * {@value #BLOCK} × {@value #BLOCK} block of the image for camera rays, per (shape, light) (a box:
+ * per face) for the shadow rays leaving that surface towards that light, and per (shape, face) for
+ * the mirror-reflected rays leaving it. One per render thread.
  *
- * <p>A list holds every item whose box (or, for a sphere, whose own box) meets the region all the
- * bundle's rays lie in, widened far beyond rounding, so a ray's hits among the listed items are
- * all its hits in the tree. Shadow lists keep the leaves' depth-first order, the order
+ * <p>A list holds every item whose box (or, for a sphere or a box, whose own box) meets the region
+ * all the bundle's rays lie in, widened far beyond rounding, so a ray's hits among the listed items
+ * are all its hits in the tree. Shadow lists keep the leaves' depth-first order, the order
  * {@link BvhWalker#nextAny} meets them in, so a product of transmittances is taken in the same
- * order to the bit; block lists are sorted by a lower bound of the distance to each item, so a ray
- * stops at the first item that starts beyond its nearest hit.
+ * order to the bit; block and reflected-ray lists are sorted by a lower bound of the ray parameter
+ * at each item, so a ray stops at the first item that starts beyond its nearest hit.
  */
 final class Candidates {
     /** Side of a block of pixels sharing one list of primary candidates (fixed in image coordinates). */
@@ -25,16 +26,16 @@ final class Candidates {
     static final int SHADOW_LIMIT = 48;
     /** Shadow rays a (shape, light) pair casts by the walk before its list is built: a shape lit once does not repay a list. */
     static final int SHADOW_AFTER = 4;
+    /**
+     * Reflected rays a (shape, face) record walks before its list is built: their lists are dearer
+     * to build (a sweep to the scene's end) and a face seen by few rays (one sample a pixel) does not
+     * repay one (measured on the box field, section 28).
+     */
+    static final int REFLECTED_AFTER = 16;
     /** Relative widening of every region test, far above the rounding of rays, hits and the tests themselves. */
     private static final double WIDEN = 1e-9;
-    /** A pair on trial is −(cost of its walks << TRIAL_BITS | walks), the cost as {@link #walked} is told it. */
-    private static final int TRIAL_BITS = 3, TRIAL_MASK = (1 << TRIAL_BITS) - 1;
-    /** The (shape, light) pair whose shadow ray is walking on trial, or −1. */
-    private int trialKey = -1;
     /** The weight of a CSG tree or a mesh against a plain shape's test, in {@link #weight}. */
     static final int HEAVY = 8;
-    /** A state of a (shape, light) pair: no list, always the walk. */
-    private static final int WALK = Integer.MAX_VALUE;
 
     private final Bvh bvh;
     private final int[] items;
@@ -66,17 +67,63 @@ final class Candidates {
      * thread (a million spheres under four lights still fit).
      */
     private static final long MAX_PAIRS = 1L << 22;
-    /** Whether the scene has few enough pairs for shadow lists. */
-    private final boolean shadowLists;
-    /** Per shape × light: 0 unseen, negative on trial (see {@link #TRIAL_BITS}), {@link #WALK}, or 1 + the list's index in {@link #pool}. */
+    /** At most this many records a thread (120 bytes each); rays they would cover keep the walk. */
+    static final int MAX_RECORDS = 1 << 17;
+    /** At most this many ints (and as many bounds) of lists a thread (48 MB); once full, no more lists are built. */
+    static final int MAX_POOL = 1 << 22;
+    /** Records a key keeps per face of a box: regions apart on one face (a list that could not grow) get records of their own. */
+    static final int MAX_SIBLINGS = 4;
+    /** A record's region grows to take in a ray outside it at most this many times. */
+    static final int MAX_GROWTHS = 4;
+    /** Whether the scene has few enough pairs for lists. */
+    private final boolean lists;
+    /**
+     * Per key, 0 unseen or 1 + the index of its heads in {@link #faceHeads}: key shape × lights +
+     * light for the shadow rays of (shape, light), shapes × lights + shape for the mirror-reflected
+     * rays leaving the shape.
+     */
     private int[] state;
-    /** The lists, each: its length, its region's number, then its items in depth-first leaf order. */
+    /** Per key and face (six for a box, one for other shapes): 0 or 1 + the first of its records; at most {@link #MAX_RECORDS}. */
+    private int[] faceHeads = new int[256];
+    private int headCount;
+    /**
+     * Per record, {@value #RECORD} ints: the walks taken on trial, their cost (see {@link #walked}),
+     * 1 + its list's index in {@link #pool} (0: none yet, −1: walk), the growths left, the face (of
+     * a box; else 0), 1 + the next record of the key and face (0: none); and 12 doubles in {@link #regions}.
+     */
+    private int[] records = new int[RECORD * 64];
+    /** Ints per record. */
+    private static final int RECORD = 6;
+    /** A record's list field (less 1) when its rays walk. */
+    private static final int WALKS = -2;
+    private int recordCount;
+    /**
+     * Per record: the box its rays' origins lie in (min x, y, z, max x, y, z), then the box their
+     * directions lie in (reflected rays; ±∞ for shadow rays, whose direction the light fixes).
+     */
+    private double[] regions = new double[12 * 64];
+    /**
+     * The lists, each: its length, then its items: a shadow list in depth-first leaf order, a
+     * reflected-ray list by ascending lower bound of the ray parameter, held at the same index in
+     * {@link #near}.
+     */
     int[] pool = new int[1024];
+    double[] near = new double[1024];
     private int poolSize;
-    /** Per list (its number at pool[list + 1]), the box its shadow rays' origins must lie in: min x, y, z, max x, y, z. */
-    private double[] regions = new double[6 * 64];
-    private int regionCount;
-    /** The region box and the light point of the shadow list being built. */
+    /**
+     * Per light (and one more for reflected rays): the key and record whose list the last listed
+     * ray took, tested first, since neighbouring rays mostly leave the same face (only records with a
+     * list are cached, so its list field is one).
+     */
+    private final int[] cacheKey, cacheRecord;
+    /** The record whose ray is walking on trial, or −1. */
+    private int trialRecord = -1;
+    /** The direction box of the reflected-ray list being built, and the largest length of a direction in it. */
+    private final double[] directions = new double[6];
+    private double reach;
+    /** Per axis, +1 when every ray of the list being built moves up along it, −1 when every one moves down, else 0. */
+    private final int[] moving = new int[3];
+    /** The region box and the far box of the shadow list being built. */
     private final double[] hull = new double[12];
 
     Candidates(Bvh bvh, int[] items, Shapes shapes, Lights lights) {
@@ -89,7 +136,10 @@ final class Candidates {
         double size = 0;
         for (double v : bvh.root) size = Math.max(size, Math.abs(v));
         sceneSize = size;
-        shadowLists = (long) shapes.count() * lights.count <= MAX_PAIRS;
+        lists = (long) shapes.count() * (lights.count + 1) <= MAX_PAIRS;
+        cacheKey = new int[lights.count + 1];
+        cacheRecord = new int[lights.count + 1];
+        Arrays.fill(cacheKey, -1);
     }
 
     /**
@@ -139,19 +189,7 @@ final class Candidates {
         setPlane(4, c.fx, c.fy, c.fz);
         blockCount = collect(true, blockItems, BLOCK_LIMIT);
         if (blockCount < 0) return;
-        // Insertion sort by the lower bound (lists are short); ties keep the leaves' order.
-        for (int k = 1; k < blockCount; k++) {
-            double t = blockNear[k];
-            int item = blockItems[k];
-            int m = k - 1;
-            while (m >= 0 && blockNear[m] > t) {
-                blockNear[m + 1] = blockNear[m];
-                blockItems[m + 1] = blockItems[m];
-                m--;
-            }
-            blockNear[m + 1] = t;
-            blockItems[m + 1] = item;
-        }
+        sortByNear(blockItems, blockNear, 0, blockCount);
     }
 
     /** Plane k through the camera containing directions e and g, its normal turned towards the direction m inside. */
@@ -210,79 +248,219 @@ final class Candidates {
     }
 
     /**
-     * The index in {@link #pool} of the shadow list of {@code shape} towards point light {@code light}
-     * (at its position q), valid for a shadow ray from o; −1 when the ray is to walk the tree.
+     * The index in {@link #pool} of the shadow list of {@code shape} (a box: its face {@code face})
+     * towards {@code light}, valid for a shadow ray from o; −1 when the ray is to walk the tree.
      */
-    int shadow(int shape, int light, double ox, double oy, double oz) {
-        trialKey = -1;
-        if (!shadowLists) return -1;
+    int shadow(int shape, int face, int light, double ox, double oy, double oz) {
+        return lookup(shape * lights.count + light, shape, face, light, ox, oy, oz, 0, 0, 0);
+    }
+
+    /**
+     * The index in {@link #pool} of the list for a mirror-reflected ray leaving {@code shape} (a
+     * box: its face {@code face}) from o along d; −1 when the ray is to walk the tree. Every ray a
+     * list is for lies in its region swept along its box of directions, R + t·D for t ≥ 0: a box
+     * whose faces move linearly in t, tested as the shadow rays' hulls are; its items are sorted by
+     * a lower bound of the ray parameter at which a ray can reach them, so a ray stops at the first
+     * item that starts beyond its nearest hit.
+     */
+    int reflected(int shape, int face, double ox, double oy, double oz, double dx, double dy, double dz) {
+        // Shorter directions would need a longer sweep: walked (mirror directions are unit).
+        if (dx * dx + dy * dy + dz * dz < 0.25) {
+            trialRecord = -1;
+            return -1;
+        }
+        return lookup(shapes.count() * lights.count + shape, shape, face, -1, ox, oy, oz, dx, dy, dz);
+    }
+
+    /**
+     * The list for a ray of {@code key} from o along d (light ≥ 0: a shadow ray, d unused), or −1.
+     *
+     * <p>A list covers the region its rays came from, not the shape's whole box: the box of the
+     * origins (and directions) of its first {@value #SHADOW_AFTER} rays, which walk on trial, widened
+     * by its extent on each axis. A later ray outside it grows the region (the sides it lies beyond,
+     * by the union's extent or at least a fraction of the shape's) and builds the list again,
+     * {@value #MAX_GROWTHS} times at most; when a list would grow too heavy, the rays outside it
+     * start a new record of the same face with a trial of its own, {@value #MAX_SIBLINGS} at most.
+     */
+    private int lookup(int key, int shape, int face, int light, double ox, double oy, double oz, double dx, double dy, double dz) {
+        trialRecord = -1;
+        if (!lists) return -1;
         int[] st = state;
-        if (st == null) st = state = new int[shapes.count() * lights.count];
-        int key = shape * lights.count + light;
-        int s = st[key];
-        if (s == WALK) return -1;
-        if (s <= 0) {
-            int walks = -s & TRIAL_MASK;
-            if (walks < SHADOW_AFTER) {
-                trialKey = key;
+        if (st == null) st = state = new int[shapes.count() * (lights.count + 1)];
+        // A box's faces keep records of their own: the origins on one face lie in one plane.
+        if (shapes.kind[shape] != Shapes.BOX) face = 0;
+        int[] rc = records;
+        double[] r = regions;
+        int slot = light < 0 ? lights.count : light, cached = cacheRecord[slot];
+        if (cacheKey[slot] == key && rc[RECORD * cached + 4] == face) {
+            int k = 12 * cached;
+            if (ox >= r[k] && oy >= r[k + 1] && oz >= r[k + 2] && ox <= r[k + 3] && oy <= r[k + 4] && oz <= r[k + 5]
+                    && dx >= r[k + 6] && dy >= r[k + 7] && dz >= r[k + 8] && dx <= r[k + 9] && dy <= r[k + 10] && dz <= r[k + 11]) {
+                return rc[RECORD * cached + 2] - 1;
+            }
+        }
+        return search(key, shape, face, light, slot, ox, oy, oz, dx, dy, dz);
+    }
+
+    /** {@link #lookup} past the cached record: the key's records of that face, a trial, a growth or a new record. */
+    private int search(int key, int shape, int face, int light, int slot, double ox, double oy, double oz, double dx, double dy,
+            double dz) {
+        int[] st = state, rc = records;
+        double[] r = regions;
+        int heads = st[key] - 1;
+        if (heads < 0) {
+            // The heads of the key's lists of records, one per face of a box.
+            heads = headCount;
+            int n = shapes.kind[shape] == Shapes.BOX ? 6 : 1;
+            if (heads + n > MAX_RECORDS) return -1;
+            if (faceHeads.length < heads + n) faceHeads = Arrays.copyOf(faceHeads, 2 * faceHeads.length);
+            Arrays.fill(faceHeads, heads, heads + n, 0);
+            headCount += n;
+            st[key] = 1 + heads;
+        }
+        int trial = -1, growing = -1, siblings = 0, last = -1;
+        for (int s = faceHeads[heads + face]; s != 0; s = rc[RECORD * last + 5]) {
+            last = s - 1;
+            int ri = RECORD * last;
+            siblings++;
+            int list = rc[ri + 2] - 1;
+            if (list == WALKS) continue;
+            if (list < 0) {
+                trial = last;
+                continue;
+            }
+            int k = 12 * last;
+            if (ox >= r[k] && oy >= r[k + 1] && oz >= r[k + 2] && ox <= r[k + 3] && oy <= r[k + 4] && oz <= r[k + 5]
+                    && dx >= r[k + 6] && dy >= r[k + 7] && dz >= r[k + 8] && dx <= r[k + 9] && dy <= r[k + 10] && dz <= r[k + 11]) {
+                cacheKey[slot] = key;
+                cacheRecord[slot] = last;
+                return list;
+            }
+            if (growing < 0 && rc[ri + 3] > 0) growing = last;
+        }
+        if (trial >= 0) {
+            int ri = RECORD * trial;
+            if (rc[ri] < (light < 0 ? REFLECTED_AFTER : SHADOW_AFTER)) {
+                int k = 12 * trial;
+                for (int a = 0; a < 3; a++) {
+                    double o = a == 0 ? ox : a == 1 ? oy : oz, d = a == 0 ? dx : a == 1 ? dy : dz;
+                    r[k + a] = Math.min(r[k + a], o);
+                    r[k + 3 + a] = Math.max(r[k + 3 + a], o);
+                    r[k + 6 + a] = Math.min(r[k + 6 + a], d);
+                    r[k + 9 + a] = Math.max(r[k + 9 + a], d);
+                }
+                trialRecord = trial;
                 return -1;
             }
-            s = st[key] = buildShadow(shape, light, (double) (-s >>> TRIAL_BITS) / walks);
-            if (s == WALK) return -1;
+            int built = grow(shape, light, trial, ox, oy, oz, dx, dy, dz);
+            if (built < 0) rc[ri + 2] = WALKS + 1;
+            return built;
         }
-        int list = s - 1;
-        double[] r = regions;
-        int k = 6 * pool[list + 1];
-        return ox >= r[k] && oy >= r[k + 1] && oz >= r[k + 2] && ox <= r[k + 3] && oy <= r[k + 4] && oz <= r[k + 5] ? list : -1;
+        if (growing >= 0) {
+            int ri = RECORD * growing;
+            rc[ri + 3]--;
+            int grown = grow(shape, light, growing, ox, oy, oz, dx, dy, dz);
+            if (grown >= 0) {
+                cacheKey[slot] = key;
+                cacheRecord[slot] = growing;
+                return grown;
+            }
+            rc[ri + 3] = 0;
+        }
+        // A list of another shape covers its whole box: a second record would be the same.
+        if (siblings >= (shapes.kind[shape] == Shapes.BOX ? MAX_SIBLINGS : 1) || recordCount == MAX_RECORDS) return -1;
+        int added = newRecord(face);
+        if (last < 0) faceHeads[heads + face] = 1 + added;
+        else records[RECORD * last + 5] = 1 + added;
+        return search(key, shape, face, light, slot, ox, oy, oz, dx, dy, dz);
+    }
+
+    private int newRecord(int face) {
+        int rec = recordCount++;
+        if (records.length < RECORD * recordCount) {
+            records = Arrays.copyOf(records, 2 * records.length);
+            regions = Arrays.copyOf(regions, 2 * regions.length);
+        }
+        int ri = RECORD * rec;
+        records[ri] = 0;
+        records[ri + 1] = 0;
+        records[ri + 2] = 0;
+        records[ri + 3] = MAX_GROWTHS;
+        records[ri + 4] = face;
+        records[ri + 5] = 0;
+        int k = 12 * rec;
+        for (int a = 0; a < 3; a++) {
+            regions[k + a] = regions[k + 6 + a] = Double.POSITIVE_INFINITY;
+            regions[k + 3 + a] = regions[k + 9 + a] = Double.NEGATIVE_INFINITY;
+        }
+        return rec;
     }
 
     /**
-     * Records what the walk of the shadow ray the last {@link #shadow} call turned down cost, while
-     * its pair is on trial: the walks it took (0 or 1), and their nodes opened plus their items
-     * tested, weighed by {@link #weight} (a node's two box tests cost about a sphere's test).
+     * Widens record {@code rec}'s region to take in o (and d), never past the shape's box widened by
+     * the tracer's offset (no origin lies outside it), and builds its list for that region; the new
+     * list, or −1 when the ray is to walk (its list would be too long, cost more than its trial
+     * walks did on average, or the pool is full), the region and list then staying as they were.
      */
-    void walked(int walks, int cost) {
-        if (trialKey < 0 || walks == 0) return;
-        int s = -state[trialKey];
-        int items = Math.min((s >>> TRIAL_BITS) + cost, Integer.MAX_VALUE >>> TRIAL_BITS);
-        state[trialKey] = -(items << TRIAL_BITS | (s & TRIAL_MASK) + walks);
-        trialKey = -1;
-    }
-
-    /**
-     * What testing an item costs, in tests of a plain shape: a CSG tree or a mesh gathers or walks
-     * its own parts. {@link Tracer}'s walk counts its CSG trees the same way.
-     */
-    int weight(int item) {
-        return item < 0 ? HEAVY : shapes.kind[item] == Shapes.MESH ? HEAVY : 1;
-    }
-
-    /**
-     * Builds the shadow list of {@code shape} towards {@code light}, or returns {@link #WALK} when it
-     * would be too long or cost more than {@code walkedCost}, what its pair's walks cost on average:
-     * each a node's pair of box tests and each item tested, weighed by {@link #weight}.
-     */
-    private int buildShadow(int shape, int light, double walkedCost) {
+    private int grow(int shape, int light, int rec, double ox, double oy, double oz, double dx, double dy, double dz) {
         Aabb b = shapes.bounds(shape);
-        if (b.isEmpty() || !b.isFinite()) return WALK;
+        if (b.isEmpty() || !b.isFinite()) return -1;
+        int ri = RECORD * rec, walks = records[ri];
+        if (walks == 0) return -1;
+        double walkedCost = (double) records[ri + 1] / walks;
         double x0 = b.min().x(), y0 = b.min().y(), z0 = b.min().z(), x1 = b.max().x(), y1 = b.max().y(), z1 = b.max().z();
-        // The shadow ray leaves the hit point by Tracer's offset, at most OFFSET × max(|p|, scale).
+        // A ray leaves the hit point by Tracer's offset, at most OFFSET × max(|p|, scale).
         double big = Math.max(Math.max(Math.max(Math.abs(x0), Math.abs(x1)), Math.max(Math.abs(y0), Math.abs(y1))),
                 Math.max(Math.max(Math.abs(z0), Math.abs(z1)), shapes.scale[shape]));
         double w = 4 * Tracer.OFFSET * big;
-        double[] h = hull;
-        h[0] = x0 - w;
-        h[1] = y0 - w;
-        h[2] = z0 - w;
-        h[3] = x1 + w;
-        h[4] = y1 + w;
-        h[5] = z1 + w;
-        if (lights.kind[light] == Lights.PARALLEL) {
+        double[] r = regions, h = hull, dir = directions;
+        int k = 12 * rec;
+        boolean first = records[ri + 2] == 0;
+        // A box's face is flat: its rays' origins fill a small part of the box. Other shapes' lists
+        // cover their whole box, which one build does (their trial regions gained nothing on
+        // the 10,000 spheres and cost their growths, section 28).
+        boolean flat = shapes.kind[shape] == Shapes.BOX;
+        for (int a = 0; a < 3; a++) {
+            double bl = (a == 0 ? x0 : a == 1 ? y0 : z0) - w, bh = (a == 0 ? x1 : a == 1 ? y1 : z1) + w;
+            double o = a == 0 ? ox : a == 1 ? oy : oz, d = a == 0 ? dx : a == 1 ? dy : dz;
+            // The first region is the trial's box widened by its extent on every side; a growth
+            // widens only the sides the ray lies beyond, by the union's extent or at least 1/32 of
+            // the shape's (directions: 1/8), so that a few growths cover what the rays come from.
+            if (flat) {
+                h[a] = widen(first, r[k + a], r[k + 3 + a], o, (bh - bl) / 32, bl, false);
+                h[3 + a] = widen(first, r[k + a], r[k + 3 + a], o, (bh - bl) / 32, bh, true);
+            } else {
+                h[a] = Math.min(bl, o);
+                h[3 + a] = Math.max(bh, o);
+            }
+            if (light < 0) {
+                // Unit directions have no component beyond ±1.
+                dir[a] = widen(first, r[k + 6 + a], r[k + 9 + a], d, 0.125, -1, false);
+                dir[3 + a] = widen(first, r[k + 6 + a], r[k + 9 + a], d, 0.125, 1, true);
+            } else {
+                dir[a] = Double.NEGATIVE_INFINITY;
+                dir[3 + a] = Double.POSITIVE_INFINITY;
+            }
+        }
+        double sweep = 4 * Math.sqrt(3) * (sceneSize + big) + 1;
+        if (light < 0) {
+            // Beyond twice the diameter of the box around every item a ray at least ½ long (as
+            // reflected() takes them) has left it: the far box is the region moved that far.
+            double m = 0;
+            for (int a = 0; a < 3; a++) {
+                h[6 + a] = h[a] + 2 * sweep * dir[a];
+                h[9 + a] = h[3 + a] + 2 * sweep * dir[3 + a];
+                double c = Math.max(Math.abs(dir[a]), Math.abs(dir[3 + a]));
+                m += c * c;
+            }
+            // A ray's parameter t covers at least the distance travelled over the longest direction's length.
+            reach = Math.sqrt(m) * (1 + 1e-9);
+        } else if (lights.kind[light] == Lights.PARALLEL) {
             // Every shadow ray runs along the light's direction w to infinity: the region box swept
             // along w. Swept by more than the diameter of the box around every item, nothing lies
             // beyond, so its far end may be a box moved that far.
             double wx = lights.x[light], wy = lights.y[light], wz = lights.z[light];
-            double far = (4 * Math.sqrt(3) * (sceneSize + big) + 1) / Math.sqrt(wx * wx + wy * wy + wz * wz);
+            double far = sweep / Math.sqrt(wx * wx + wy * wy + wz * wz);
             for (int a = 0; a < 3; a++) {
                 double wa = a == 0 ? wx : a == 1 ? wy : wz;
                 h[6 + a] = h[a] + far * wa;
@@ -293,19 +471,128 @@ final class Candidates {
             h[7] = h[10] = lights.y[light];
             h[8] = h[11] = lights.z[light];
         }
+        // Per axis, whether every ray of the region moves up along it (+1) or down (−1).
+        for (int a = 0; a < 3; a++) {
+            double lo, hi;
+            if (light < 0) {
+                lo = dir[a];
+                hi = dir[3 + a];
+            } else if (lights.kind[light] == Lights.PARALLEL) {
+                lo = hi = a == 0 ? lights.x[light] : a == 1 ? lights.y[light] : lights.z[light];
+            } else {
+                // Towards the light's point q: q − o over o in the region.
+                double q = a == 0 ? lights.x[light] : a == 1 ? lights.y[light] : lights.z[light];
+                lo = q - h[3 + a];
+                hi = q - h[a];
+            }
+            moving[a] = lo > 0 ? 1 : hi < 0 ? -1 : 0;
+        }
         int at = poolSize;
-        if (pool.length < at + 2 + SHADOW_LIMIT) pool = Arrays.copyOf(pool, Math.max(2 * pool.length, at + 2 + SHADOW_LIMIT));
-        if (regions.length < 6 * (regionCount + 1)) regions = Arrays.copyOf(regions, 2 * regions.length);
-        int n = collectInto(false, pool, at + 2, SHADOW_LIMIT, null);
-        if (n < 0) return WALK;
+        if (at + 1 + SHADOW_LIMIT > MAX_POOL) return -1;
+        if (pool.length < at + 1 + SHADOW_LIMIT) {
+            int size = Math.max(2 * pool.length, at + 1 + SHADOW_LIMIT);
+            pool = Arrays.copyOf(pool, size);
+            near = Arrays.copyOf(near, size);
+        }
+        // A reflected-ray list is tested item by item where the walk tests two boxes a step, and a
+        // mirror field's rays fan out: it must weigh half its trial walks (measured, section 28).
+        double bound = light < 0 ? walkedCost / 2 : walkedCost;
+        // Every item weighs at least 1: the walk stops as soon as the list is too heavy.
+        int n = collectInto(false, pool, at + 1, (int) Math.min(SHADOW_LIMIT, bound), light < 0 ? near : null);
+        if (n < 0) return -1;
         double cost = 0;
-        for (int k = at + 2; k < at + 2 + n; k++) cost += weight(pool[k]);
-        if (cost > walkedCost) return WALK;
+        for (int i = at + 1; i < at + 1 + n; i++) cost += weight(pool[i]);
+        if (cost > bound) return -1;
+        if (light < 0) sortByNear(pool, near, at + 1, n);
         pool[at] = n;
-        pool[at + 1] = regionCount;
-        System.arraycopy(h, 0, regions, 6 * regionCount++, 6);
-        poolSize = at + 2 + n;
-        return at + 1;
+        System.arraycopy(h, 0, r, k, 6);
+        System.arraycopy(dir, 0, r, k + 6, 6);
+        poolSize = at + 1 + n;
+        records[ri + 2] = at + 1;
+        return at;
+    }
+
+    /**
+     * One side of a widened interval: the trial's [lo, hi] widened by its extent on both sides when
+     * {@code first}, else by at least {@code least} on the side v lies beyond; clipped to
+     * {@code bound}, but always holding v (a region must hold the ray it is built for).
+     */
+    private static double widen(boolean first, double lo, double hi, double v, double least, double bound, boolean upper) {
+        double extent = Math.max(hi, v) - Math.min(lo, v), step = Math.max(extent, least);
+        if (upper) return Math.max(Math.min(first ? Math.max(hi, v) + extent : v > hi ? v + step : hi, bound), v);
+        return Math.min(Math.max(first ? Math.min(lo, v) - extent : v < lo ? v - step : lo, bound), v);
+    }
+
+    /** Whether the ray the last {@link #shadow} or {@link #reflected} call turned down walks on trial (its cost is wanted). */
+    boolean onTrial() {
+        return trialRecord >= 0;
+    }
+
+    /**
+     * Records what the walk of the ray the last {@link #shadow} or {@link #reflected} call turned
+     * down cost, while its record is on trial: the walks it took (0 or 1), and their nodes opened plus
+     * their items tested, weighed by {@link #weight} (a node's two box tests cost about a sphere's test).
+     */
+    void walked(int walks, int cost) {
+        if (trialRecord < 0 || walks == 0) return;
+        int ri = RECORD * trialRecord;
+        records[ri] += walks;
+        records[ri + 1] = (int) Math.min((long) records[ri + 1] + cost, Integer.MAX_VALUE);
+        trialRecord = -1;
+    }
+
+    /**
+     * What testing an item costs, in tests of a plain shape: a CSG tree or a mesh gathers or walks
+     * its own parts. {@link Tracer}'s walk counts its CSG trees the same way.
+     */
+    int weight(int item) {
+        return item < 0 ? HEAVY : shapes.kind[item] == Shapes.MESH ? HEAVY : 1;
+    }
+
+    /** Sorts {@code count} items from {@code at} by their lower bounds (lists are short); ties keep the leaves' order. */
+    private static void sortByNear(int[] items, double[] near, int at, int count) {
+        for (int k = at + 1; k < at + count; k++) {
+            double t = near[k];
+            int item = items[k];
+            int m = k - 1;
+            while (m >= at && near[m] > t) {
+                near[m + 1] = near[m];
+                items[m + 1] = items[m];
+                m--;
+            }
+            near[m + 1] = t;
+            items[m + 1] = item;
+        }
+    }
+
+    /**
+     * A lower bound of the parameter t at which a ray of the swept region being built (origin in
+     * the region box of {@link #hull}, direction at most {@link #reach} long) reaches the box.
+     */
+    private double reached(double x0, double y0, double z0, double x1, double y1, double z1) {
+        double[] h = hull;
+        double dx = Math.max(0, Math.max(x0 - h[3], h[0] - x1));
+        double dy = Math.max(0, Math.max(y0 - h[4], h[1] - y1));
+        double dz = Math.max(0, Math.max(z0 - h[5], h[2] - z1));
+        double d = Math.sqrt(dx * dx + dy * dy + dz * dz);
+        // Hits of grazing rays are rounded by up to about √ε of their distance.
+        return (d - 1e-6 * d - WIDEN * sceneSize) / reach;
+    }
+
+    /**
+     * Whether every ray of the list being built starts beyond the box on some axis (the region box
+     * of {@link #hull} wholly past it) and moves away from it along that axis. Such a ray's slab
+     * distances to that axis's two planes are both negative (their signs are exact), so the box's
+     * own test (a slab test) finds no crossing at t > 0: its factor is 1 and it is never the
+     * nearest hit. It tells apart what the widened hull test cannot: a box the region touches,
+     * such as the shape's own box under the face the rays leave, or its neighbours' of the same height.
+     */
+    private boolean receding(double x0, double y0, double z0, double x1, double y1, double z1) {
+        double[] h = hull;
+        int[] m = moving;
+        return m[0] > 0 && h[0] > x1 || m[0] < 0 && h[3] < x0
+                || m[1] > 0 && h[1] > y1 || m[1] < 0 && h[4] < y0
+                || m[2] > 0 && h[2] > z1 || m[2] < 0 && h[5] < z0;
     }
 
     /**
@@ -374,20 +661,31 @@ final class Candidates {
                     int item = items[i];
                     double x0 = b[slot], y0 = b[slot + 2], z0 = b[slot + 4];
                     double x1 = b[slot + Bvh.MAX], y1 = b[slot + Bvh.MAX + 2], z1 = b[slot + Bvh.MAX + 4];
-                    if (item >= 0 && shapes.kind[item] == Shapes.SPHERE) {
+                    int kind = item >= 0 ? shapes.kind[item] : -1;
+                    if (kind == Shapes.SPHERE || kind == Shapes.BOX) {
                         double[] d = shapes.data;
                         int o = shapes.offset[item];
-                        double r = d[o + 3];
-                        x0 = d[o] - r;
-                        y0 = d[o + 1] - r;
-                        z0 = d[o + 2] - r;
-                        x1 = d[o] + r;
-                        y1 = d[o + 1] + r;
-                        z1 = d[o + 2] + r;
+                        if (kind == Shapes.SPHERE) {
+                            double r = d[o + 3];
+                            x0 = d[o] - r;
+                            y0 = d[o + 1] - r;
+                            z0 = d[o + 2] - r;
+                            x1 = d[o] + r;
+                            y1 = d[o + 1] + r;
+                            z1 = d[o + 2] + r;
+                        } else {
+                            x0 = d[o];
+                            y0 = d[o + 1];
+                            z0 = d[o + 2];
+                            x1 = d[o + 3];
+                            y1 = d[o + 4];
+                            z1 = d[o + 5];
+                        }
                         if (!(frustum ? inFrustum(x0, y0, z0, x1, y1, z1) : inHull(x0, y0, z0, x1, y1, z1))) continue;
+                        if (!frustum && kind == Shapes.BOX && receding(x0, y0, z0, x1, y1, z1)) continue;
                     }
                     if (n == limit) return -1;
-                    if (near != null) near[at + n] = nearest(x0, y0, z0, x1, y1, z1);
+                    if (near != null) near[at + n] = frustum ? nearest(x0, y0, z0, x1, y1, z1) : reached(x0, y0, z0, x1, y1, z1);
                     out[at + n++] = item;
                 }
                 node = POP;

@@ -51,6 +51,10 @@ final class Tracer {
     boolean blockRay;
     /** The shape whose surface is being shaded (its shadow rays may take its list), or {@link #NONE}. */
     int shading = NONE;
+    /** The face of {@link #shading}'s surface being shaded. */
+    int shadingFace;
+    /** Set before a mirror-reflected ray is traced: the shape (and face) it leaves, whose list of {@link #candidates} it may take; else {@link #NONE}. */
+    private int reflectedFrom = NONE, reflectedFace;
     /** Shadow rays that walked the BVH, and the items they tested (weighed as {@link Candidates#weight}). */
     private int walks, tested;
     /** The item that made the last {@link #blocked} true. */
@@ -121,7 +125,11 @@ final class Tracer {
             double wr, double wg, double wb) {
         boolean block = blockRay;
         blockRay = false;
-        if (!(block ? blockHit(ox, oy, oz, dx, dy, dz) : closestHit(ox, oy, oz, dx, dy, dz, Double.POSITIVE_INFINITY))) {
+        int from = reflectedFrom;
+        reflectedFrom = NONE;
+        if (!(block ? blockHit(ox, oy, oz, dx, dy, dz)
+                : from != NONE ? reflectedHit(from, reflectedFace, ox, oy, oz, dx, dy, dz)
+                : closestHit(ox, oy, oz, dx, dy, dz, Double.POSITIVE_INFINITY))) {
             background.shade(dx, dy, dz, colour);
             accR += wr * colour[0];
             accG += wg * colour[1];
@@ -188,6 +196,7 @@ final class Tracer {
             // On smooth meshes the lights are looked at from the shading point and along the shading
             // normal; shadow rays still leave along the geometric normal.
             shading = s;
+            shadingFace = hit.face;
             if (Features.GOOCH && gooch != null && mat[m + Materials.MODEL] == Materials.GOOCH) {
                 gooch.shade(m, cr, cg, cb, ks, er, eg, eb, px, py, pz, snx, sny, snz, -dx, -dy, -dz, colour);
             } else if (Features.SHAPES && surface.shaded) {
@@ -220,6 +229,10 @@ final class Tracer {
         if (kr > 0) {
             if (rough == 0) {
                 reflectedRays++;
+                if (candidates != null) {
+                    reflectedFrom = s;
+                    reflectedFace = hit.face;
+                }
                 trace(px + delta * nx, py + delta * ny, pz + delta * nz, rdx, rdy, rdz, depth - 1, wr * kr, wg * kr, wb * kr);
             } else {
                 spawn(px, py, pz, rdx, rdy, rdz, nx, ny, nz, delta, depth, rough, samples, wr * kr, wg * kr, wb * kr);
@@ -383,7 +396,7 @@ final class Tracer {
     private double listedTransmittance(double ox, double oy, double oz, double wx, double wy, double wz, double tMax, int light,
             boolean listable) {
         if (!listable || shading == NONE || candidates == null) return transmittance(ox, oy, oz, wx, wy, wz, tMax, light, -1);
-        int list = candidates.shadow(shading, light, ox, oy, oz);
+        int list = candidates.shadow(shading, shadingFace, light, ox, oy, oz);
         if (list >= 0) return transmittance(ox, oy, oz, wx, wy, wz, tMax, light, list);
         int walks = this.walks, tested = this.tested + walker.anySteps;
         double s = transmittance(ox, oy, oz, wx, wy, wz, tMax, light, -1);
@@ -421,6 +434,11 @@ final class Tracer {
 
     /** The nearest surface with 0 < t < tMax into {@link #hit}; {@link #ray} keeps the ray for the surface query. */
     boolean closestHit(double ox, double oy, double oz, double dx, double dy, double dz, double tMax) {
+        return closestHit(ox, oy, oz, dx, dy, dz, tMax, false);
+    }
+
+    /** {@link #closestHit}; with {@code count}, adding the items it tests to {@link #tested}, weighed as {@link Candidates#weight}. */
+    private boolean closestHit(double ox, double oy, double oz, double dx, double dy, double dz, double tMax, boolean count) {
         ray.set(ox, oy, oz, dx, dy, dz);
         boolean found = unboundedHit(tMax);
         if (found) tMax = hit.t;
@@ -437,6 +455,7 @@ final class Tracer {
         if (!walk.start(bvh, ray, 0, tMax)) return found;
         for (int leaf = walk.nextNearest(tMax); leaf != BvhWalker.END; leaf = walk.nextNearest(tMax)) {
             for (int k = Bvh.leafFirst(leaf), end = k + Bvh.leafCount(leaf); k < end; k++) {
+                if (count) tested += candidates.weight(items[k]);
                 if (hitItem(items[k], tMax)) {
                     found = true;
                     tMax = hit.t;
@@ -473,6 +492,36 @@ final class Tracer {
         double[] near = c.blockNear;
         for (int k = 0, n = c.blockCount; k < n && near[k] < tMax; k++) {
             if (hitItem(list[k], tMax)) {
+                found = true;
+                tMax = hit.t;
+            }
+        }
+        return found;
+    }
+
+    /**
+     * {@link #closestHit} (tMax = +∞) of a mirror-reflected ray leaving {@code shape}'s face
+     * {@code face}: through the list of {@link #candidates} for it when there is one (every item the
+     * ray can meet, nearest lower bound first, so the same hit is found; where two items give exactly
+     * the same t, the one listed first), else by the walk, whose cost the list's trial is told.
+     */
+    boolean reflectedHit(int shape, int face, double ox, double oy, double oz, double dx, double dy, double dz) {
+        Candidates c = candidates;
+        int list = c.reflected(shape, face, ox, oy, oz, dx, dy, dz);
+        if (list < 0) {
+            int steps = walker.nearestSteps, tested = this.tested;
+            boolean found = closestHit(ox, oy, oz, dx, dy, dz, Double.POSITIVE_INFINITY, c.onTrial());
+            c.walked(1, walker.nearestSteps - steps + this.tested - tested);
+            return found;
+        }
+        ray.set(ox, oy, oz, dx, dy, dz);
+        double tMax = Double.POSITIVE_INFINITY;
+        boolean found = unboundedHit(tMax);
+        if (found) tMax = hit.t;
+        int[] items = c.pool;
+        double[] near = c.near;
+        for (int k = list + 1, end = k + items[list]; k < end && near[k] < tMax; k++) {
+            if (hitItem(items[k], tMax)) {
                 found = true;
                 tMax = hit.t;
             }
@@ -549,7 +598,7 @@ final class Tracer {
         }
         if (list >= 0) {
             int[] pool = candidates.pool;
-            for (int k = list + 2, end = k + pool[list]; k < end; k++) {
+            for (int k = list + 1, end = k + pool[list]; k < end; k++) {
                 product *= itemTransmittance(pool[k], tMax);
                 if (product == 0) return blockedBy(light, pool[k]);
             }

@@ -179,16 +179,51 @@ class CandidatesTest {
      * (on the grid or above the field) or, with {@code parallel}, a parallel light.
      */
     private static void checkShadows(SplittableRandom r, boolean parallel) {
+        checkShadows(r, parallel, false);
+    }
+
+    @Test
+    void aShadowListGrownOverAFieldOfColumnsGivesEachShadowRayTheFactorOfItsOwnWalkToTheBit() {
+        checkShadows(new SplittableRandom(44), false, true);
+        checkShadows(new SplittableRandom(45), true, true);
+    }
+
+    /**
+     * Columns of random heights packed on a grid (the 2015 drops scene's field), some transparent,
+     * seen from above: a column's top face and the upper parts of its sides cast the shadow rays,
+     * so its lists cover a small region that grows as rays come from farther parts of it.
+     */
+    private static List<Entity> columns(SplittableRandom r) {
+        List<Entity> es = new ArrayList<>();
+        for (int i = -6; i < 6; i++) {
+            for (int j = -6; j < 6; j++) {
+                double top = 0.01 + r.nextDouble() * (r.nextInt(4) == 0 ? 0.6 : 0.2);
+                Material m = r.nextInt(3) == 0 ? PAINTS[r.nextInt(PAINTS.length)] : PAINTS[0];
+                es.add(box(v(0.5 * i, -3, 0.5 * j), v(0.5 * i + 0.5, top, 0.5 * j + 0.5), m));
+            }
+        }
+        if (r.nextBoolean()) {
+            es.add(csg(CsgOperation.DIFFERENCE, sphere(v(0.3, 1.2, 0.2), 0.6, PAINTS[2]), box(v(-1, 1.1, -1), v(1, 3, 1), PAINTS[0])));
+        }
+        return es;
+    }
+
+    private static void checkShadows(SplittableRandom r, boolean parallel, boolean columns) {
         int listed = 0, partial = 0, rays = 0;
         double[] d = new double[3];
         LightSample sample = new LightSample();
         for (int scene = 0; scene < 16; scene++) {
-            Vec3 light = r.nextBoolean() ? gridPoint(r) : v(r.nextGaussian() * 8, 5 + r.nextDouble() * 10, r.nextGaussian() * 8);
+            // Among the columns' lights, some below their tops: rays from the sides then go down.
+            Vec3 light = columns ? v(r.nextGaussian() * 3, -0.5 + r.nextDouble() * 4, r.nextGaussian() * 3)
+                    : r.nextBoolean() ? gridPoint(r) : v(r.nextGaussian() * 8, 5 + r.nextDouble() * 10, r.nextGaussian() * 8);
+            if (columns && parallel) light = v(r.nextGaussian(), 0.1 + r.nextDouble(), r.nextGaussian());
             Light source = parallel ? parallel(light, v(0, 0, 0), rgb(1, 1, 1), 0.1) : point(light, rgb(1, 1, 1), 0, 0.1);
-            Settings s = settings(aimed(r), List.of(source), Background.BLACK, 64, 48);
+            Camera eye = columns ? camera(v(r.nextGaussian() * 2, 1 + r.nextDouble() * 2, 4), v(r.nextGaussian(), 0, 0), 40 + r.nextInt(40))
+                    : aimed(r);
+            Settings s = settings(eye, List.of(source), Background.BLACK, 64, 48);
             Vec3 towards = parallel ? ((ParallelLight) source).towardsLight() : null;
             Lights lights = new Lights(s.lights());
-            List<Entity> es = field(r, true);
+            List<Entity> es = columns ? columns(r) : field(r, true);
             Tracer listing = tracer(es, s), walking = tracer(es, s);
             CameraRays camera = new CameraRays(s.camera(), 64, 48);
             SurfacePoint p = new SurfacePoint();
@@ -206,16 +241,17 @@ class CandidatesTest {
                 double ox = p.px + side * p.nx, oy = p.py + side * p.ny, oz = p.pz + side * p.nz;
                 walking.shading = Tracer.NONE;
                 listing.shading = shape;
+                listing.shadingFace = walking.hit.face;
                 double lone, fast;
                 boolean list;
                 if (parallel) {
                     lights.sample(0, 0, p.px, p.py, p.pz, null, sample);
                     lone = walking.shadow(sample, p.px, p.py, p.pz, p.nx, p.ny, p.nz, side, 0);
-                    list = listing.candidates.shadow(shape, 0, ox, oy, oz) >= 0;
+                    list = listing.candidates.shadow(shape, walking.hit.face, 0, ox, oy, oz) >= 0;
                     fast = listing.shadow(sample, p.px, p.py, p.pz, p.nx, p.ny, p.nz, side, 0);
                 } else {
                     lone = walking.shadowTo(ox, oy, oz, light.x(), light.y(), light.z(), side, 0);
-                    list = listing.candidates.shadow(shape, 0, ox, oy, oz) >= 0;
+                    list = listing.candidates.shadow(shape, walking.hit.face, 0, ox, oy, oz) >= 0;
                     fast = listing.shadowTo(ox, oy, oz, light.x(), light.y(), light.z(), side, 0);
                 }
                 String what = "scene " + scene + ", ray " + k + " from shape " + shape;
@@ -230,8 +266,8 @@ class CandidatesTest {
                 }
             }
         }
-        System.out.printf("shadow lists%s: %d rays, %d listed, %d partly lit%n", parallel ? " (parallel light)" : "", rays, listed,
-                partial);
+        System.out.printf("shadow lists%s%s: %d rays, %d listed, %d partly lit%n", parallel ? " (parallel light)" : "",
+                columns ? " (columns)" : "", rays, listed, partial);
         // The lists were taken for many rays (the others' pairs weigh more listed than walked), and
         // many of those crossed transparent casters.
         // (A parallel light's sweep crosses the whole field: fewer of its lists pay.)
@@ -240,7 +276,110 @@ class CandidatesTest {
     }
 
     @Test
+    void aReflectedRaysListGivesEachMirrorRayTheHitOfItsOwnWalk() {
+        checkReflected(new SplittableRandom(46), false);
+        checkReflected(new SplittableRandom(47), true);
+    }
+
+    /**
+     * Mirror-reflected rays, three bounces deep, from the surface points camera rays find in random
+     * fields (or fields of columns seen from above, with {@code columns}): each ray once through its
+     * (shape, face) list and once by its own walk, the same t, shape, face and flip but where two
+     * surfaces are within rounding of each other.
+     */
+    private static void checkReflected(SplittableRandom r, boolean columns) {
+        int listed = 0, rays = 0, hits = 0, ties = 0;
+        double[] d = new double[3];
+        SurfacePoint p = new SurfacePoint();
+        for (int scene = 0; scene < 16; scene++) {
+            Camera eye = columns ? camera(v(r.nextGaussian() * 2, 1 + r.nextDouble() * 2, 4), v(r.nextGaussian(), 0, 0), 40 + r.nextInt(40))
+                    : aimed(r);
+            Settings s = settings(eye, List.of(), Background.BLACK, 64, 48);
+            List<Entity> es = columns ? columns(r) : field(r, false);
+            Tracer listing = tracer(es, s), walking = tracer(es, s);
+            CameraRays camera = new CameraRays(s.camera(), 64, 48);
+            for (int k = 0; k < 6000; k++) {
+                camera.direction(r.nextInt(64), r.nextInt(48), r.nextDouble(), r.nextDouble(), d);
+                double ox = camera.px, oy = camera.py, oz = camera.pz, dx = d[0], dy = d[1], dz = d[2];
+                for (int bounce = 0; bounce < 3; bounce++) {
+                    if (!walking.closestHit(ox, oy, oz, dx, dy, dz, Double.POSITIVE_INFINITY)) break;
+                    // The mirror ray as Tracer.trace casts it: off the surface along the ray-facing geometric normal.
+                    int shape = walking.hit.shape, face = walking.hit.face;
+                    walking.shapes().surface(shape, face, walking.hit.t, walking.ray, p);
+                    double nx = p.nx, ny = p.ny, nz = p.nz;
+                    if (walking.hit.flip) {
+                        nx = -nx;
+                        ny = -ny;
+                        nz = -nz;
+                    }
+                    double dn = dx * nx + dy * ny + dz * nz;
+                    if (dn > 0) {
+                        nx = -nx;
+                        ny = -ny;
+                        nz = -nz;
+                        dn = -dn;
+                    }
+                    double delta = Tracer.OFFSET * Math.max(Math.max(Math.abs(p.px), Math.abs(p.py)),
+                            Math.max(Math.abs(p.pz), walking.shapes().scale[shape]));
+                    ox = p.px + delta * nx;
+                    oy = p.py + delta * ny;
+                    oz = p.pz + delta * nz;
+                    dx -= 2 * dn * nx;
+                    dy -= 2 * dn * ny;
+                    dz -= 2 * dn * nz;
+                    if (k % 8 == 0) {
+                        // Now and then a ray from the same point in a direction near the mirror's, off
+                        // the surface: a list must not take a ray whose direction lies outside its own.
+                        double gx = dx + 0.3 * r.nextGaussian(), gy = dy + 0.3 * r.nextGaussian(), gz = dz + 0.3 * r.nextGaussian();
+                        double g = Math.sqrt(gx * gx + gy * gy + gz * gz), gn = gx * nx + gy * ny + gz * nz;
+                        if (gn < 0) g = -g;
+                        sameHit(listing, walking, shape, face, ox, oy, oz, gx / g, gy / g, gz / g, "scene " + scene + ", ray " + k);
+                    }
+                    boolean lone = walking.closestHit(ox, oy, oz, dx, dy, dz, Double.POSITIVE_INFINITY);
+                    double tLone = walking.hit.t;
+                    boolean list = listing.candidates.reflected(shape, face, ox, oy, oz, dx, dy, dz) >= 0;
+                    boolean fast = listing.reflectedHit(shape, face, ox, oy, oz, dx, dy, dz);
+                    String what = "scene " + scene + ", ray " + k + ", bounce " + bounce + " from shape " + shape;
+                    rays++;
+                    if (list) listed++;
+                    assertThat(fast).as(what).isEqualTo(lone);
+                    if (!lone) break;
+                    hits++;
+                    if (listing.hit.t != tLone || listing.hit.shape != walking.hit.shape) {
+                        assertThat(listing.hit.t).as(what).isCloseTo(tLone, org.assertj.core.data.Offset.offset(1e-12 * tLone));
+                        ties++;
+                        continue;
+                    }
+                    assertThat(listing.hit.face).as(what).isEqualTo(walking.hit.face);
+                    assertThat(listing.hit.flip).as(what).isEqualTo(walking.hit.flip);
+                }
+            }
+        }
+        System.out.printf("reflected lists%s: %d rays, %d listed, %d hits, %d ties%n", columns ? " (columns)" : "", rays, listed,
+                hits, ties);
+        assertThat(ties).isLessThan(hits / 200 + 1);
+        // Random fields scatter mirror rays every way: few of their lists pay; a field of columns' do.
+        assertThat(listed).isGreaterThan(rays / (columns ? 10 : 60));
+        assertThat(hits).isGreaterThan(rays / 10);
+    }
+
+    /** The ray through {@code listing}'s reflected-ray list (or walk) and by {@code walking}'s walk: the same hit, ties aside. */
+    private static void sameHit(Tracer listing, Tracer walking, int shape, int face, double ox, double oy, double oz, double dx,
+            double dy, double dz, String what) {
+        boolean lone = walking.closestHit(ox, oy, oz, dx, dy, dz, Double.POSITIVE_INFINITY);
+        boolean fast = listing.reflectedHit(shape, face, ox, oy, oz, dx, dy, dz);
+        assertThat(fast).as(what).isEqualTo(lone);
+        if (!lone || listing.hit.t != walking.hit.t) {
+            if (lone) assertThat(listing.hit.t).as(what).isCloseTo(walking.hit.t, org.assertj.core.data.Offset.offset(1e-12 * walking.hit.t));
+            return;
+        }
+        assertThat(listing.hit.shape).as(what).isEqualTo(walking.hit.shape);
+        assertThat(listing.hit.face).as(what).isEqualTo(walking.hit.face);
+    }
+
+    @Test
     void listedRaysAllocateNothingOnceTheirListsAreBuilt() {
+        final int PASSES = Candidates.REFLECTED_AFTER + 4;
         SplittableRandom r = new SplittableRandom(7);
         List<Entity> es = new ArrayList<>();
         for (int k = 0; k < 2000; k++) {
@@ -256,24 +395,28 @@ class CandidatesTest {
         long id = Thread.currentThread().getId();
         long allocated = 0;
         int listed = 0;
-        for (int pass = 0; pass < 6; pass++) {
+        for (int pass = 0; pass < PASSES; pass++) {
             long before = threads.getThreadAllocatedBytes(id);
             for (int j = 0; j < 48; j++) {
                 for (int i = 0; i < 64; i++) {
                     camera.direction(i, j, 0.5, 0.5, d);
                     if (!t.candidates.block(camera, i, j)) continue;
                     if (!t.blockHit(camera.px, camera.py, camera.pz, d[0], d[1], d[2])) continue;
-                    int shape = t.hit.shape;
+                    int shape = t.hit.shape, face = t.hit.face;
                     double hx = camera.px + t.hit.t * d[0], hy = camera.py + t.hit.t * d[1], hz = camera.pz + t.hit.t * d[2];
                     t.shading = shape;
-                    if (pass == 5 && t.candidates.shadow(shape, 0, hx, hy, hz) >= 0) listed++;
+                    t.shadingFace = t.hit.face;
+                    if (pass == PASSES - 1 && t.candidates.shadow(shape, t.hit.face, 0, hx, hy, hz) >= 0) listed++;
                     t.shadowTo(hx, hy, hz, light.x(), light.y(), light.z(), 0, 0);
+                    // A ray leaving the hit, as a mirror ray would take its list (or walk).
+                    t.reflectedHit(shape, face, hx, hy, hz, d[0], -d[1], d[2]);
                 }
             }
-            // A pair's list is built after its fourth walk: by the last pass every list is built.
-            if (pass == 5) allocated = threads.getThreadAllocatedBytes(id) - before;
+            // A list is built after its record's trial walks (16 for reflected rays) and grown as
+            // rays outside it come: by the last pass every list is built.
+            if (pass == PASSES - 1) allocated = threads.getThreadAllocatedBytes(id) - before;
         }
         assertThat(listed).isGreaterThan(100);
-        assertThat(allocated).as("bytes allocated by %d listed shadow rays and their blocks' camera rays", listed).isZero();
+        assertThat(allocated).as("bytes allocated by %d listed shadow rays, their blocks' camera rays and reflected rays", listed).isZero();
     }
 }
