@@ -40,19 +40,7 @@ class EditorRepaintsGuiTest {
     @Test
     void aFoldReparseRepaintsTheWholeAreaOnlyWhenTheFoldsChanged() {
         String text = "Scene {\n  Sphere { center -> vec3(0, 0, 0) radius -> 1 }\n}\n";
-        ScriptArea area = onEdt(() -> {
-            CrtTokenMaker.register();
-            ScriptArea a = new ScriptArea(20, 60);
-            a.setSyntaxEditingStyle(CrtTokenMaker.STYLE);
-            a.setCodeFoldingEnabled(true);
-            a.setText(text);
-            frame = new JFrame("EditorRepaintsGuiTest");
-            frame.add(new org.fife.ui.rtextarea.RTextScrollPane(a));
-            frame.setSize(500, 400);
-            frame.setVisible(true);
-            return a;
-        });
-        waitFor("the area to show", 10, area::isShowing);
+        ScriptArea area = shown(text, true);
         onEdt(() -> area.getFoldManager().reparse());
         assertThat(onEdt(() -> area.getFoldManager().getFoldCount())).isEqualTo(1);
         List<String> wholeArea = new ArrayList<>();
@@ -90,18 +78,7 @@ class EditorRepaintsGuiTest {
     @Test
     void aCharacterTypedAtTheStartOfALineRepaintsThatLineOnly() {
         String text = "a = 1\nb = 2\nScene { Sphere { } }\n";
-        ScriptArea area = onEdt(() -> {
-            CrtTokenMaker.register();
-            ScriptArea a = new ScriptArea(20, 60);
-            a.setSyntaxEditingStyle(CrtTokenMaker.STYLE);
-            a.setText(text);
-            frame = new JFrame("EditorRepaintsGuiTest");
-            frame.add(new org.fife.ui.rtextarea.RTextScrollPane(a));
-            frame.setSize(500, 400);
-            frame.setVisible(true);
-            return a;
-        });
-        waitFor("the area to show", 10, area::isShowing);
+        ScriptArea area = shown(text, false);
         List<String> wholeArea = new ArrayList<>();
         List<int[]> regions = new ArrayList<>();
         onEdt(() -> {
@@ -173,5 +150,23 @@ class EditorRepaintsGuiTest {
         onEdt(() -> dirty.clear());
         onEdt(() -> tabs.repaint());
         assertThat(onEdt(() -> List.copyOf(dirty))).contains(new java.awt.Rectangle(0, 0, onEdt(() -> tabs.getWidth()), onEdt(() -> tabs.getHeight())));
+    }
+
+    /** A script area holding {@code text} (folding on or off), shown in a window of its own. */
+    private ScriptArea shown(String text, boolean folding) {
+        ScriptArea area = onEdt(() -> {
+            CrtTokenMaker.register();
+            ScriptArea a = new ScriptArea(20, 60);
+            a.setSyntaxEditingStyle(CrtTokenMaker.STYLE);
+            a.setCodeFoldingEnabled(folding);
+            a.setText(text);
+            frame = new JFrame("EditorRepaintsGuiTest");
+            frame.add(new org.fife.ui.rtextarea.RTextScrollPane(a));
+            frame.setSize(500, 400);
+            frame.setVisible(true);
+            return a;
+        });
+        waitFor("the area to show", 10, area::isShowing);
+        return area;
     }
 }
