@@ -44,16 +44,7 @@ class EditorRepaintsGuiTest {
         onEdt(() -> area.getFoldManager().reparse());
         assertThat(onEdt(() -> area.getFoldManager().getFoldCount())).isEqualTo(1);
         List<String> wholeArea = new ArrayList<>();
-        onEdt(() -> {
-            previous = RepaintManager.currentManager(area);
-            RepaintManager.setCurrentManager(new RepaintManager() {
-                @Override
-                public void addDirtyRegion(JComponent c, int x, int y, int w, int h) {
-                    if (c == area && w >= area.getWidth() && h >= area.getHeight()) wholeArea.add(w + "x" + h);
-                    super.addDirtyRegion(c, x, y, w, h);
-                }
-            });
-        });
+        recordRepaints(area, wholeArea, new ArrayList<>());
 
         // A keystroke inside the sphere's line: the same fold, no whole-area repaint from the reparse.
         onEdt(() -> area.insert("2", text.indexOf("radius -> 1") + "radius -> 1".length()));
@@ -81,17 +72,7 @@ class EditorRepaintsGuiTest {
         ScriptArea area = shown(text, false);
         List<String> wholeArea = new ArrayList<>();
         List<int[]> regions = new ArrayList<>();
-        onEdt(() -> {
-            previous = RepaintManager.currentManager(area);
-            RepaintManager.setCurrentManager(new RepaintManager() {
-                @Override
-                public void addDirtyRegion(JComponent c, int x, int y, int w, int h) {
-                    if (c == area && w >= area.getWidth() && h >= area.getHeight()) wholeArea.add(w + "x" + h);
-                    if (c == area) regions.add(new int[] {y, h});
-                    super.addDirtyRegion(c, x, y, w, h);
-                }
-            });
-        });
+        recordRepaints(area, wholeArea, regions);
 
         // "x" at the start of the second line: that line is repainted, not the whole area.
         int lineHeight = onEdt(area::getLineHeight);
@@ -168,5 +149,20 @@ class EditorRepaintsGuiTest {
         });
         waitFor("the area to show", 10, area::isShowing);
         return area;
+    }
+
+    /** From now on, every repaint of {@code area} asked for goes into {@code regions} (y, height), and those of all of it into {@code wholeArea}. */
+    private void recordRepaints(ScriptArea area, List<String> wholeArea, List<int[]> regions) {
+        onEdt(() -> {
+            previous = RepaintManager.currentManager(area);
+            RepaintManager.setCurrentManager(new RepaintManager() {
+                @Override
+                public void addDirtyRegion(JComponent c, int x, int y, int w, int h) {
+                    if (c == area && w >= area.getWidth() && h >= area.getHeight()) wholeArea.add(w + "x" + h);
+                    if (c == area) regions.add(new int[] {y, h});
+                    super.addDirtyRegion(c, x, y, w, h);
+                }
+            });
+        });
     }
 }
