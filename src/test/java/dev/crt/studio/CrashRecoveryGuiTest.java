@@ -16,7 +16,6 @@ import java.util.concurrent.TimeUnit;
 import java.util.regex.Pattern;
 import java.util.stream.Stream;
 import javax.swing.SwingUtilities;
-import org.assertj.swing.core.BasicRobot;
 import org.assertj.swing.core.Robot;
 import org.assertj.swing.finder.JOptionPaneFinder;
 import org.assertj.swing.fixture.JOptionPaneFixture;
@@ -70,7 +69,7 @@ class CrashRecoveryGuiTest {
         assertThat(victim.exitValue()).isEqualTo(128 + 9);
         assertThat(Files.readString(script)).isEqualTo(original);
 
-        Robot robot = BasicRobot.robotWithCurrentAwtHierarchy();
+        Robot robot = GuiTestSupport.robot();
         StudioWindow[] studio = new StudioWindow[1];
         List<Throwable> edtErrors = new CopyOnWriteArrayList<>();
         Thread.UncaughtExceptionHandler before = Thread.getDefaultUncaughtExceptionHandler();

@@ -34,9 +34,13 @@ final class GuiTestSupport {
         });
     }
 
-    /** The robot of every GUI test: over the current AWT hierarchy, paced for a loaded machine. */
+    /**
+     * The robot of every GUI test: over the current AWT hierarchy, paced for a loaded machine, each
+     * of its events waited for until it has come back from the X server ({@link XSyncedRobot}).
+     */
     static org.assertj.swing.core.Robot robot() {
         org.assertj.swing.core.Robot robot = org.assertj.swing.core.BasicRobot.robotWithCurrentAwtHierarchy();
+        XSyncedRobot.install(robot);
         robot.settings().delayBetweenEvents(15);
         robot.settings().eventPostingDelay(20);
         return robot;

@@ -282,6 +282,7 @@ class NavigatorGuiTest {
 
         // A light goes into the existing lights list, so that both lights shine.
         window.menuItemWithPath("Insert", "Point light").click();
+        waitFor("a second light in the script", 5, () -> text().indexOf("PointLight {", text().indexOf("PointLight {") + 1) >= 0);
         compiled();
         assertThat(text()).contains("lights -> [PointLight { origin -> vec3(3, 5, -4) }, PointLight {");
         assertThat(onEdt(() -> studio.model().current().result().scene().settings().lights())).hasSize(2);
