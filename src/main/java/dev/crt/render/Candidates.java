@@ -15,9 +15,7 @@ import java.util.Arrays;
  * are all its hits in the tree. Shadow lists keep the leaves' depth-first order, the order
  * {@link BvhWalker#nextAny} meets them in, so a product of transmittances is taken in the same
  * order to the bit; block and reflected-ray lists are sorted by a lower bound of the ray parameter
- * at each item, so a ray stops at the first item that starts beyond its nearest hit. A reflected-ray
- * list whose sweep to the scene's end would weigh too much is cut at a ray parameter T, with a far
- * list for the rest of the sweep behind it (see {@link #CUTS}).
+ * at each item, so a ray stops at the first item that starts beyond its nearest hit.
  */
 final class Candidates {
     /** Side of a block of pixels sharing one list of primary candidates (fixed in image coordinates). */
@@ -36,17 +34,6 @@ final class Candidates {
     static final int REFLECTED_AFTER = 16;
     /** Relative widening of every region test, far above the rounding of rays, hits and the tests themselves. */
     private static final double WIDEN = 1e-9;
-    /**
-     * Times a reflected-ray list too heavy to reach the scene's end is tried again with its sweep
-     * halved (from about twice the scene's diameter: the last cut is about 2⁻¹¹ of that).
-     */
-    static final int CUTS = 10;
-    /**
-     * Where a cut list's far part starts, relative to the cut: a hit of t below the cut less 10⁻⁶ of
-     * it (rounding of hits' t) is on the near list, and the boxes around a hit beyond are left after
-     * the far part's start (twice that again).
-     */
-    static final double FROM = 1 - 4e-6, DONE = 1 - 1e-6;
     /** The weight of a CSG tree or a mesh against a plain shape's test, in {@link #weight}. */
     static final int HEAVY = 8;
 
@@ -88,12 +75,6 @@ final class Candidates {
     static final int MAX_SIBLINGS = 4;
     /** A record's region grows to take in a ray outside it at most this many times. */
     static final int MAX_GROWTHS = 4;
-    /**
-     * The same for mirror records: their rays' directions spread as well as their origins, and
-     * once their lists are cut (see {@link #CUTS}) a growth rarely fails; with 4 and 4, 0.95 M of
-     * drops.crt's 2.64 M mirror rays (200 × 150) found no record and walked, with 8 and 8 0.23 M.
-     */
-    static final int MIRROR_SIBLINGS = 8, MIRROR_GROWTHS = 8;
     /** Whether the scene has few enough pairs for lists. */
     private final boolean lists;
     /**
@@ -124,8 +105,7 @@ final class Candidates {
     /**
      * The lists, each: its length, then its items: a shadow list in depth-first leaf order, a
      * reflected-ray list by ascending lower bound of the ray parameter, held at the same index in
-     * {@link #near}; at the length's index, {@link #near} holds a reflected-ray list's cut
-     * (+∞: none, it reaches the scene's end).
+     * {@link #near}.
      */
     int[] pool = new int[1024];
     double[] near = new double[1024];
@@ -388,15 +368,14 @@ final class Candidates {
             rc[ri + 3] = 0;
         }
         // A list of another shape covers its whole box: a second record would be the same.
-        if (siblings >= (shapes.kind[shape] != Shapes.BOX ? 1 : light < 0 ? MIRROR_SIBLINGS : MAX_SIBLINGS)
-                || recordCount == MAX_RECORDS) return -1;
-        int added = newRecord(face, light < 0 ? MIRROR_GROWTHS : MAX_GROWTHS);
+        if (siblings >= (shapes.kind[shape] == Shapes.BOX ? MAX_SIBLINGS : 1) || recordCount == MAX_RECORDS) return -1;
+        int added = newRecord(face);
         if (last < 0) faceHeads[heads + face] = 1 + added;
         else records[RECORD * last + 5] = 1 + added;
         return search(key, shape, face, light, slot, ox, oy, oz, dx, dy, dz);
     }
 
-    private int newRecord(int face, int growths) {
+    private int newRecord(int face) {
         int rec = recordCount++;
         if (records.length < RECORD * recordCount) {
             records = Arrays.copyOf(records, 2 * records.length);
@@ -406,7 +385,7 @@ final class Candidates {
         records[ri] = 0;
         records[ri + 1] = 0;
         records[ri + 2] = 0;
-        records[ri + 3] = growths;
+        records[ri + 3] = MAX_GROWTHS;
         records[ri + 4] = face;
         records[ri + 5] = 0;
         int k = 12 * rec;
@@ -509,76 +488,28 @@ final class Candidates {
             moving[a] = lo > 0 ? 1 : hi < 0 ? -1 : 0;
         }
         int at = poolSize;
-        // Room for a list and, behind a cut one, its far list.
-        int room = 2 * (1 + SHADOW_LIMIT);
-        if (at + room > MAX_POOL) return -1;
-        if (pool.length < at + room) {
-            int size = Math.max(2 * pool.length, at + room);
+        if (at + 1 + SHADOW_LIMIT > MAX_POOL) return -1;
+        if (pool.length < at + 1 + SHADOW_LIMIT) {
+            int size = Math.max(2 * pool.length, at + 1 + SHADOW_LIMIT);
             pool = Arrays.copyOf(pool, size);
             near = Arrays.copyOf(near, size);
         }
         // A reflected-ray list is tested item by item where the walk tests two boxes a step, and a
         // mirror field's rays fan out: it must weigh half its trial walks (measured, section 28).
         double bound = light < 0 ? walkedCost / 2 : walkedCost;
-        // A reflected-ray list too heavy to reach the scene's end is cut at a ray parameter T (its
-        // far box R + T·D): it then holds every item a ray can meet before T, and a ray whose nearest
-        // listed hit lies before T is done, while the others walk the tree from T on (Tracer).
-        // Rays rising off a field meet its neighbours within a unit or two and nothing after.
-        double cut = Double.POSITIVE_INFINITY;
-        int n;
-        for (int tries = 0; ; tries++) {
-            // Every item weighs at least 1: the walk stops as soon as the list is too heavy.
-            n = collectInto(false, pool, at + 1, (int) Math.min(SHADOW_LIMIT, bound), light < 0 ? near : null);
-            if (n >= 0) {
-                double cost = 0;
-                for (int i = at + 1; i < at + 1 + n; i++) cost += weight(pool[i]);
-                if (cost <= bound) break;
-            }
-            if (light >= 0 || tries == CUTS) return -1;
-            cut = (tries == 0 ? sweep : cut) / 2;
-            for (int a = 0; a < 3; a++) {
-                h[6 + a] = h[a] + cut * dir[a];
-                h[9 + a] = h[3 + a] + cut * dir[3 + a];
-            }
-        }
+        // Every item weighs at least 1: the walk stops as soon as the list is too heavy.
+        int n = collectInto(false, pool, at + 1, (int) Math.min(SHADOW_LIMIT, bound), light < 0 ? near : null);
+        if (n < 0) return -1;
+        double cost = 0;
+        for (int i = at + 1; i < at + 1 + n; i++) cost += weight(pool[i]);
+        if (cost > bound) return -1;
         if (light < 0) sortByNear(pool, near, at + 1, n);
         pool[at] = n;
-        near[at] = cut;
         System.arraycopy(h, 0, r, k, 6);
         System.arraycopy(dir, 0, r, k + 6, 6);
         poolSize = at + 1 + n;
-        if (cut != Double.POSITIVE_INFINITY) poolSize += farList(poolSize, cut, 2 * sweep, bound);
         records[ri + 2] = at + 1;
         return at;
-    }
-
-    /**
-     * Behind a reflected-ray list cut at T, at {@code at}: the list of what its rays can meet from
-     * T' = T(1 − 4·10⁻⁶) on to the sweep's end S, whose positions lie in the box R + T'·D swept
-     * along D to the far box R + T'·D + (S − T')·D = R + S·D; lower bounds are T' plus the distance
-     * from the first box. Its length is −1 when it would weigh more than
-     * {@code bound} (its rays then walk the tree from T'). Returns the ints taken.
-     */
-    private int farList(int at, double cut, double end, double bound) {
-        double[] h = hull, dir = directions;
-        double from = cut * FROM;
-        for (int a = 0; a < 3; a++) {
-            h[a] += from * dir[a];
-            h[3 + a] += from * dir[3 + a];
-            h[6 + a] = h[a] + (end - from) * dir[a];
-            h[9 + a] = h[3 + a] + (end - from) * dir[3 + a];
-        }
-        int n = collectInto(false, pool, at + 1, (int) Math.min(SHADOW_LIMIT, bound), near);
-        double cost = 0;
-        for (int i = at + 1; i < at + 1 + n; i++) cost += weight(pool[i]);
-        if (n < 0 || cost > bound) {
-            pool[at] = -1;
-            return 1;
-        }
-        for (int i = at + 1; i < at + 1 + n; i++) near[i] += from;
-        sortByNear(pool, near, at + 1, n);
-        pool[at] = n;
-        return 1 + n;
     }
 
     /**
@@ -590,16 +521,6 @@ final class Candidates {
         double extent = Math.max(hi, v) - Math.min(lo, v), step = Math.max(extent, least);
         if (upper) return Math.max(Math.min(first ? Math.max(hi, v) + extent : v > hi ? v + step : hi, bound), v);
         return Math.min(Math.max(first ? Math.min(lo, v) - extent : v < lo ? v - step : lo, bound), v);
-    }
-
-    /** The ray parameter a reflected-ray list (as {@link #reflected} gave it) is cut at; +∞ when it reaches the scene's end. */
-    double cut(int list) {
-        return near[list];
-    }
-
-    /** The length of the far list behind a cut reflected-ray list, or −1 when its rays walk from the cut on. */
-    int farLength(int list) {
-        return pool[list + 1 + pool[list]];
     }
 
     /** Whether the ray the last {@link #shadow} or {@link #reflected} call turned down walks on trial (its cost is wanted). */

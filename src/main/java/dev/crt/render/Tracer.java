@@ -503,8 +503,7 @@ final class Tracer {
      * {@link #closestHit} (tMax = +∞) of a mirror-reflected ray leaving {@code shape}'s face
      * {@code face}: through the list of {@link #candidates} for it when there is one (every item the
      * ray can meet, nearest lower bound first, so the same hit is found; where two items give exactly
-     * the same t, the one listed first; a list cut at some t is followed by its far list, or by the
-     * walk from there), else by the walk, whose cost the list's trial is told.
+     * the same t, the one listed first), else by the walk, whose cost the list's trial is told.
      */
     boolean reflectedHit(int shape, int face, double ox, double oy, double oz, double dx, double dy, double dz) {
         Candidates c = candidates;
@@ -525,31 +524,6 @@ final class Tracer {
             if (hitItem(items[k], tMax)) {
                 found = true;
                 tMax = hit.t;
-            }
-        }
-        double cut = near[list];
-        // A cut list holds every item the ray can meet before the cut: a hit nearer than that
-        // (less the rounding of a hit's t) is the nearest. Else the nearest lies beyond: on the
-        // far list behind it, or found by the walk from there when that list would be too long.
-        if (cut == Double.POSITIVE_INFINITY || found && tMax < cut * Candidates.DONE) return found;
-        int far = list + 1 + items[list];
-        if (items[far] >= 0) {
-            for (int k = far + 1, end = k + items[far]; k < end && near[k] < tMax; k++) {
-                if (hitItem(items[k], tMax)) {
-                    found = true;
-                    tMax = hit.t;
-                }
-            }
-            return found;
-        }
-        BvhWalker walk = walker;
-        if (!walk.start(bvh, ray, cut * Candidates.FROM, tMax)) return found;
-        for (int leaf = walk.nextNearest(tMax); leaf != BvhWalker.END; leaf = walk.nextNearest(tMax)) {
-            for (int k = Bvh.leafFirst(leaf), end = k + Bvh.leafCount(leaf); k < end; k++) {
-                if (hitItem(this.items[k], tMax)) {
-                    found = true;
-                    tMax = hit.t;
-                }
             }
         }
         return found;
