@@ -63,63 +63,21 @@ final class BoxShape {
     }
 
     static boolean span(double[] a, int o, Ray ray, LineSpan out) {
-        if (!slabs(ray.ox, ray.oy, ray.oz, ray.dx, ray.dy, ray.dz, ray.ix, ray.iy, ray.iz,
-                a[o], a[o + 1], a[o + 2], a[o + 3], a[o + 4], a[o + 5], ray)) return false;
-        out.one(ray.boxIn, ray.boxOut, ray.boxFaceIn, ray.boxFaceOut);
-        return true;
+        return slabs(ray.ox, ray.oy, ray.oz, ray.dx, ray.dy, ray.dz, ray.ix, ray.iy, ray.iz,
+                a[o], a[o + 1], a[o + 2], a[o + 3], a[o + 4], a[o + 5], out);
     }
 
     static boolean mappedSpan(double[] a, int o, Ray ray, LineSpan out) {
         ray.toLocal(a, o);
         int b = o + 24;
-        if (!slabs(ray.lox, ray.loy, ray.loz, ray.ldx, ray.ldy, ray.ldz, 1 / ray.ldx, 1 / ray.ldy, 1 / ray.ldz,
-                a[b], a[b + 1], a[b + 2], a[b + 3], a[b + 4], a[b + 5], ray)) return false;
-        out.one(ray.boxIn, ray.boxOut, ray.boxFaceIn, ray.boxFaceOut);
-        return true;
+        return slabs(ray.lox, ray.loy, ray.loz, ray.ldx, ray.ldy, ray.ldz, 1 / ray.ldx, 1 / ray.ldy, 1 / ray.ldz,
+                a[b], a[b + 1], a[b + 2], a[b + 3], a[b + 4], a[b + 5], out);
     }
 
-    /**
-     * {@link Shapes#anyHit} of an axis-aligned box: whether the line crosses its surface at some
-     * 0 &lt; t &lt; tMax, the same answer as its {@link #span} read by the general loop, without the span.
-     */
-    static boolean anyHit(double[] a, int o, Ray ray, double tMax) {
-        if (!slabs(ray.ox, ray.oy, ray.oz, ray.dx, ray.dy, ray.dz, ray.ix, ray.iy, ray.iz,
-                a[o], a[o + 1], a[o + 2], a[o + 3], a[o + 4], a[o + 5], ray)) return false;
-        double in = ray.boxIn, out = ray.boxOut;
-        return in > 0 && in < tMax || out > 0 && out < tMax;
-    }
-
-    /** {@link Shapes#firstHit} of an axis-aligned box (shape s): the first crossing with 0 &lt; t &lt; tMax into hit, as its span gives it. */
-    static boolean firstHit(double[] a, int o, Ray ray, double tMax, int s, Hit hit) {
-        if (!slabs(ray.ox, ray.oy, ray.oz, ray.dx, ray.dy, ray.dz, ray.ix, ray.iy, ray.iz,
-                a[o], a[o + 1], a[o + 2], a[o + 3], a[o + 4], a[o + 5], ray)) return false;
-        double t;
-        int face;
-        if (ray.boxIn > 0) {
-            t = ray.boxIn;
-            face = ray.boxFaceIn;
-        } else if (ray.boxOut > 0) {
-            t = ray.boxOut;
-            face = ray.boxFaceOut;
-        } else {
-            return false;
-        }
-        if (!(t < tMax)) return false;
-        hit.t = t;
-        hit.shape = s;
-        hit.face = face;
-        hit.flip = false;
-        return true;
-    }
-
-    /**
-     * The slab test with faces numbered 2·axis (+1 on the max side); parallel axes are decided
-     * exactly. The line's interval in the box is left in the ray's scratch (plain fields, where a
-     * span's are arrays behind a reference: the shadow and first-hit tests of boxes read them there).
-     */
+    /** The slab test with faces numbered 2·axis (+1 on the max side); parallel axes are decided exactly. */
     private static boolean slabs(double ox, double oy, double oz, double dx, double dy, double dz,
             double ix, double iy, double iz, double x0, double y0, double z0, double x1, double y1, double z1,
-            Ray out) {
+            LineSpan out) {
         double tin = Double.NEGATIVE_INFINITY, tout = Double.POSITIVE_INFINITY;
         int fin = -1, fout = -1;
         if (dx == 0) {
@@ -181,10 +139,7 @@ final class BoxShape {
             }
         }
         if (tin > tout) return false;
-        out.boxIn = tin;
-        out.boxOut = tout;
-        out.boxFaceIn = fin;
-        out.boxFaceOut = fout;
+        out.one(tin, tout, fin, fout);
         return true;
     }
 

@@ -12,9 +12,6 @@ final class Ray {
     int nearX, nearY, nearZ;
     /** The ray in a shape's own coordinates, written by {@link #toLocal} (t keeps its meaning: the map is affine). */
     double lox, loy, loz, ldx, ldy, ldz;
-    /** The interval of the line in the last box {@link BoxShape} tested, and the faces crossed at its ends. */
-    double boxIn, boxOut;
-    int boxFaceIn, boxFaceOut;
 
     void set(double ox, double oy, double oz, double dx, double dy, double dz) {
         this.ox = ox;

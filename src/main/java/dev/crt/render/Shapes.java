@@ -307,15 +307,12 @@ final class Shapes {
     /**
      * The nearest crossing of shape {@code s} with 0 &lt; t &lt; tMax into {@code hit} (t, shape, face;
      * flip false), for a shape standing alone (CSG gathers crossings with {@link #span}). Meshes and
-     * tori stop at the nearest hit instead of gathering the whole line; boxes keep their slab test
-     * out of the span; the other kinds read the
+     * tori stop at the nearest hit instead of gathering the whole line; the other kinds read the
      * first crossing of their span, which is as cheap. {@code scratch} is the thread's span.
      */
     boolean firstHit(int s, Ray ray, double tMax, LineSpan scratch, Hit hit) {
         int o = offset[s];
         double[] a = data;
-        // The commonest kind in the fields the 2015 scenes are made of, tested without a span.
-        if (kind[s] == BOX) return BoxShape.firstHit(a, o, ray, tMax, s, hit);
         if (Features.SHAPES) {
             switch (kind[s]) {
                 case MESH:
@@ -370,7 +367,6 @@ final class Shapes {
     boolean anyHit(int s, Ray ray, double tMax, LineSpan scratch) {
         int o = offset[s];
         double[] a = data;
-        if (kind[s] == BOX) return BoxShape.anyHit(a, o, ray, tMax);
         if (Features.SHAPES) {
             switch (kind[s]) {
                 case MESH:

@@ -5,7 +5,6 @@ import static org.assertj.core.api.Assertions.assertThat;
 
 import dev.crt.geom.Transform;
 import dev.crt.geom.Vec3;
-import dev.crt.scene.Box;
 import dev.crt.scene.Cylinder;
 import dev.crt.scene.Material;
 import dev.crt.scene.Mesh;
@@ -60,18 +59,6 @@ class FirstHitTest {
         check(new Sphere(new Vec3(0.1, 0.2, 0.3), 0.8, M, PLACED, SourceSpan.NONE), 1000);
         check(new Cylinder(new Vec3(0, -1, 0), new Vec3(0.2, 1, 0.1), 0.5, true, M, PLACED, SourceSpan.NONE), 1000);
         check(new Cylinder(new Vec3(0, -1, 0), new Vec3(0.2, 1, 0.1), 0.5, false, M, PLACED, SourceSpan.NONE), 1000);
-    }
-
-    @Test
-    void axisAlignedBoxesAnswerWithoutTheirSpanAsTheSpanWould() {
-        Transform aligned = Transform.scaling(new Vec3(1.5, 0.75, 1.2)).then(Transform.translation(new Vec3(0.3, -0.2, 0.5)));
-        Box box = new Box(new Vec3(-1, -0.5, -0.25), new Vec3(0.5, 1, 0.75), M, aligned, SourceSpan.NONE);
-        Shapes shapes = new Shapes();
-        shapes.add(box, aligned, 0);
-        assertThat(shapes.kind[0]).isEqualTo(Shapes.BOX);
-        check(box, 4000);
-        // A flat box (a face of zero thickness) too.
-        check(new Box(new Vec3(-1, 0.25, -0.25), new Vec3(0.5, 0.25, 0.75), M, aligned, SourceSpan.NONE), 4000);
     }
 
     /** Compares firstHit and anyHit with the span on rays of every family; counts that each family hit. */
