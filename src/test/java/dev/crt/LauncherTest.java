@@ -49,6 +49,12 @@ class LauncherTest {
         assertThat(Files.readString(clone.resolve("out2"))).contains("a.crt: ok");
         assertThat(clone.resolve("target/crt.jar")).isRegularFile();
         assertThat(clone.resolve("target/test-classes")).doesNotExist();
+        // The training render made a start-up cache: one that fails (a training scene the compiler
+        // refuses) leaves none, and nothing else says so.
+        try (Stream<Path> made = Files.list(clone.resolve("target"))) {
+            assertThat(made.map(p -> p.getFileName().toString()))
+                    .anyMatch(name -> name.startsWith("crt-") && (name.endsWith(".aot") || name.endsWith(".jsa")));
+        }
 
         // The start-up cache the first run made is the one later runs can use: the JVM refuses a
         // cache made with other options (it did, silently, for every render on Java 25), and says
