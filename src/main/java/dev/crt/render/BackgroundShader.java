@@ -6,6 +6,8 @@ import dev.crt.scene.GradientBackground;
 import dev.crt.scene.PanoramaBackground;
 import dev.crt.scene.Picture;
 import dev.crt.scene.SolidBackground;
+import java.lang.ref.SoftReference;
+import java.lang.ref.WeakReference;
 
 /**
  * The colour of rays that hit nothing: a solid colour, a horizon-to-sky gradient by elevation, or an
@@ -67,7 +69,7 @@ final class BackgroundShader {
             h = pic.height();
             boolean linearise = gamma != 1 && !original;
             for (int k = 0; k < 256; k++) level[k] = linearise ? (float) srgbToLinear(k / 255f) : k / 255f;
-            codes = pack(pic.rgb());
+            codes = packOnce(pic.rgb());
             if (codes == null) {
                 tex = pic.rgb().clone();
                 if (linearise) {
@@ -89,6 +91,40 @@ final class BackgroundShader {
         angle = ang;
     }
 
+    /** k/255f for each 8-bit code k: what a decoder's texel of code k holds. */
+    private static final float[] CODE_VALUE = new float[256];
+
+    static {
+        for (int k = 0; k < 256; k++) CODE_VALUE[k] = k / 255f;
+    }
+
+    /**
+     * The texels last packed, kept softly, and the float texels they came from, weakly (the scene
+     * holds those): a render after the first of the same scene (the studio's, a live view's, an
+     * animation's next frame, whose compile gets the same picture again from
+     * {@link dev.crt.image.PictureFiles}) shares them instead of packing 18 M texels again.
+     */
+    private static WeakReference<float[]> packedFrom = new WeakReference<>(null);
+    private static SoftReference<int[]> packedTexels = new SoftReference<>(null);
+
+    /** {@link #pack}, or the last result when {@code rgb} is the very array packed last. */
+    private static synchronized int[] packOnce(float[] rgb) {
+        int[] p = packedFrom.get() == rgb ? packedTexels.get() : null;
+        if (p == null) {
+            p = pack(rgb);
+            if (p != null) {
+                packedFrom = new WeakReference<>(rgb);
+                packedTexels = new SoftReference<>(p);
+            }
+        }
+        return p;
+    }
+
+    /** Whether this shader reads the same packed texels as {@code other} (not copies of them). */
+    boolean sharesTexels(BackgroundShader other) {
+        return packed != null && packed == other.packed;
+    }
+
     /** The texels as 0xRRGGBB when every value is an 8-bit code k/255 (as decoders give), else null. */
     private static int[] pack(float[] rgb) {
         int[] out = new int[rgb.length / 3];
@@ -100,10 +136,13 @@ final class BackgroundShader {
         return out;
     }
 
-    /** k when v is exactly k/255f for a k in 0 … 255, else −1. */
-    private static int code(float v) {
-        int k = Math.round(v * 255);
-        return k >= 0 && k <= 255 && k / 255f == v ? k : -1;
+    /**
+     * k when v is exactly k/255f for a k in 0 … 255, else −1: the code nearest v, checked against
+     * the table (a panorama's load checks 54 M values; a division each was most of it).
+     */
+    static int code(float v) {
+        int k = (int) (v * 255 + 0.5f);
+        return k >= 0 && k <= 255 && CODE_VALUE[k] == v ? k : -1;
     }
 
     /** The sRGB transfer function inverted: stored value in [0, 1] to linear light. */
