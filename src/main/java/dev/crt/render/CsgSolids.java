@@ -403,18 +403,6 @@ final class CsgSolids {
         return a;
     }
 
-    /**
-     * {@link #sort} for a pair walk's events: when both operands gave an entry and an exit in
-     * order (the common case, no NaN), the two runs merged (ties to the first operand, as the
-     * stable sort puts them) in {@code a}; otherwise the sort itself.
-     */
-    static int[] sortPair(double[] t, int n, int[] a, int[] b) {
-        if (n != 4 || !(t[0] <= t[1]) || !(t[2] <= t[3])) return sort(t, n, a, b);
-        int i = 0, j = 2;
-        for (int k = 0; k < 4; k++) a[k] = i < 2 && (j == 4 || !(t[j] < t[i])) ? i++ : j++;
-        return a;
-    }
-
     /** Whether tree-local node {@code v} (already reset for this walk) contains the point the walk is at. */
     private boolean state(int g, int v, Scratch sc) {
         int in = sc.inside[v];
@@ -584,7 +572,7 @@ final class CsgSolids {
         double tol = TIE * (o + scale[tree]);
         double[] eventT = sc.eventT;
         int[] eventLeaf = sc.eventLeaf;
-        int[] order = sortPair(eventT, n, sc.order, sc.merge);
+        int[] order = sort(eventT, n, sc.order, sc.merge);
         boolean known = false, state = false;
         double product = 1;
         int i = 0;

@@ -30,27 +30,4 @@ class CsgEventOrderTest {
         for (int i = 0; i < n; i++) got.add(order[i]);
         assertThat(got).isEqualTo(expected);
     }
-
-    /** A pair walk's up to four events: merged runs give exactly the general sort's order, ties and NaN included. */
-    @Property(tries = 2000)
-    void aPairsEventsComeAsTheSortPutsThem(@ForAll long seed, @ForAll @IntRange(min = 0, max = 4) int n) {
-        SplittableRandom r = new SplittableRandom(seed);
-        double[] values = {-1, 0, 0.5, 0.5, 1, 2, Double.NEGATIVE_INFINITY, Double.POSITIVE_INFINITY, Double.NaN, -0.0};
-        double[] t = new double[n];
-        for (int i = 0; i < n; i++) t[i] = r.nextInt(4) == 0 ? values[r.nextInt(values.length)] : r.nextInt(3) * 0.25;
-        // Mostly as the operands give them: each one's entry before its exit.
-        if (n == 4 && r.nextInt(5) > 0) {
-            if (t[1] < t[0]) swap(t, 0, 1);
-            if (t[3] < t[2]) swap(t, 2, 3);
-        }
-        int[] want = CsgSolids.sort(t, n, new int[n], new int[n]);
-        int[] got = CsgSolids.sortPair(t, n, new int[n], new int[n]);
-        for (int i = 0; i < n; i++) assertThat(got[i]).as("%s", java.util.Arrays.toString(t)).isEqualTo(want[i]);
-    }
-
-    private static void swap(double[] t, int i, int j) {
-        double x = t[i];
-        t[i] = t[j];
-        t[j] = x;
-    }
 }
