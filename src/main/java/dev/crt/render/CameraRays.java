@@ -132,7 +132,9 @@ final class CameraRays {
      * pinhole ray meets the plane in focus, P + D·F/(D·f): with the lens offset L = O − P, its
      * direction is D·F/(D·f) − L, or D − L·(D·f)/F scaled by (D·f)/F. So D need not be a unit
      * vector (one normalisation, not two), and the point in focus is never formed (it overflows
-     * when the focal distance is near the largest double).
+     * when the focal distance is near the largest double). It allocates its scratch (a ray now
+     * and then, as the tests take); the renderer's samplers call {@link #aim} and
+     * {@link #throughLens(double[], double, double, double[], double[])} with their own.
      */
     void throughLens(int i, int j, double sx, double sy, double lx, double ly, double[] o, double[] d) {
         double[] aim = new double[AIM];
