@@ -21,7 +21,9 @@ public final class Atan {
     public static double atan2(double y, double x) {
         double ax = Math.abs(x), ay = Math.abs(y);
         if (!(ax + ay > 0)) return Math.atan2(y, x);
-        double lo = Math.min(ax, ay), hi = Math.max(ax, ay);
+        // ax and ay are not NaN here: a comparison orders them (Math.min and max also sort out NaN and −0).
+        boolean steep = ay > ax;
+        double lo = steep ? ax : ay, hi = steep ? ay : ax;
         boolean far = lo > TAN_PI_8 * hi;
         // (z − 1)/(z + 1) with z = lo/hi is (lo − hi)/(lo + hi).
         double w = far ? (lo - hi) / (lo + hi) : lo / hi;
@@ -38,7 +40,7 @@ public final class Atan {
         p = p * q + P0;
         double r = w + w * q * p;
         if (far) r += PI_4;
-        if (ay > ax) r = Math.PI / 2 - r;
+        if (steep) r = Math.PI / 2 - r;
         if (x < 0) r = Math.PI - r;
         return Math.copySign(r, y);
     }

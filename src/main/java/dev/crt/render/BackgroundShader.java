@@ -6,6 +6,8 @@ import dev.crt.scene.GradientBackground;
 import dev.crt.scene.PanoramaBackground;
 import dev.crt.scene.Picture;
 import dev.crt.scene.SolidBackground;
+import java.lang.ref.SoftReference;
+import java.lang.ref.WeakReference;
 
 /**
  * The colour of rays that hit nothing: a solid colour, a horizon-to-sky gradient by elevation, or an
@@ -25,10 +27,16 @@ final class BackgroundShader {
     private final float[] texels;
     /** The texels as 0xRRGGBB of 8-bit codes, when they all are; else null. */
     private final int[] packed;
-    /** The value of each 8-bit code, linear or as stored (see the constructor). */
-    private final float[] level = new float[256];
+    /**
+     * The value of each 8-bit code, linear or as stored (see the constructor): floats, held as
+     * doubles so that a lookup's twelve reads need no conversion (the same values; 10 ns of a
+     * lookup's 78).
+     */
+    private final double[] level = new double[256];
     private final int texWidth, texHeight;
     private final double angle;
+    /** The panorama's x + 0.5 = atan2(d.x, d.z)·uScale + uOffset (mod width), y = vOffset − elevation·vScale. */
+    private final double uScale, uOffset, vScale, vOffset;
 
     BackgroundShader(Background background, double gamma) {
         this(background, gamma, false);
@@ -67,7 +75,7 @@ final class BackgroundShader {
             h = pic.height();
             boolean linearise = gamma != 1 && !original;
             for (int k = 0; k < 256; k++) level[k] = linearise ? (float) srgbToLinear(k / 255f) : k / 255f;
-            codes = pack(pic.rgb());
+            codes = packOnce(pic.rgb());
             if (codes == null) {
                 tex = pic.rgb().clone();
                 if (linearise) {
@@ -87,6 +95,45 @@ final class BackgroundShader {
         texWidth = w;
         texHeight = h;
         angle = ang;
+        uScale = w / (2 * Math.PI);
+        double turn = 0.5 + ang / (2 * Math.PI);
+        uOffset = (turn - Math.floor(turn)) * w;
+        vScale = h / Math.PI;
+        vOffset = 0.5 * h - 0.5;
+    }
+
+    /** k/255f for each 8-bit code k: what a decoder's texel of code k holds. */
+    private static final float[] CODE_VALUE = new float[256];
+
+    static {
+        for (int k = 0; k < 256; k++) CODE_VALUE[k] = k / 255f;
+    }
+
+    /**
+     * The texels last packed, kept softly, and the float texels they came from, weakly (the scene
+     * holds those): a render after the first of the same scene (the studio's, a live view's, an
+     * animation's next frame, whose compile gets the same picture again from
+     * {@link dev.crt.image.PictureFiles}) shares them instead of packing 18 M texels again.
+     */
+    private static WeakReference<float[]> packedFrom = new WeakReference<>(null);
+    private static SoftReference<int[]> packedTexels = new SoftReference<>(null);
+
+    /** {@link #pack}, or the last result when {@code rgb} is the very array packed last. */
+    private static synchronized int[] packOnce(float[] rgb) {
+        int[] p = packedFrom.get() == rgb ? packedTexels.get() : null;
+        if (p == null) {
+            p = pack(rgb);
+            if (p != null) {
+                packedFrom = new WeakReference<>(rgb);
+                packedTexels = new SoftReference<>(p);
+            }
+        }
+        return p;
+    }
+
+    /** Whether this shader reads the same packed texels as {@code other} (not copies of them). */
+    boolean sharesTexels(BackgroundShader other) {
+        return packed != null && packed == other.packed;
     }
 
     /** The texels as 0xRRGGBB when every value is an 8-bit code k/255 (as decoders give), else null. */
@@ -100,10 +147,13 @@ final class BackgroundShader {
         return out;
     }
 
-    /** k when v is exactly k/255f for a k in 0 … 255, else −1. */
-    private static int code(float v) {
-        int k = Math.round(v * 255);
-        return k >= 0 && k <= 255 && k / 255f == v ? k : -1;
+    /**
+     * k when v is exactly k/255f for a k in 0 … 255, else −1: the code nearest v, checked against
+     * the table (a panorama's load checks 54 M values; a division each was most of it).
+     */
+    static int code(float v) {
+        int k = (int) (v * 255 + 0.5f);
+        return k >= 0 && k <= 255 && CODE_VALUE[k] == v ? k : -1;
     }
 
     /** The sRGB transfer function inverted: stored value in [0, 1] to linear light. */
@@ -152,18 +202,22 @@ final class BackgroundShader {
     }
 
     /**
-     * u = frac(0.5 + (atan2(d.x, d.z) + angle)/2π), v = 0.5 − asin(d.y)/π; texel (x, y) covers
+     * u = frac(0.5 + (atan2(d.x, d.z) + angle)/2π), v = 0.5 − asin(d.y)/π (rounded otherwise than
+     * written: x and y within 1e-12 of a texel of it); texel (x, y) covers
      * [x, x+1)/width × [y, y+1)/height, so its centre sits at ((x + 0.5)/width, (y + 0.5)/height).
      */
     private void panorama(double dx, double dy, double dz, double[] out) {
-        double u = 0.5 + (Atan.atan2(dx, dz) + angle) / (2 * Math.PI);
-        u -= Math.floor(u);
+        // x + 0.5 = u·width as one product and sum (the turn's offset folded into uOffset) wrapped
+        // into [0, width) by a comparison, y likewise: no division, no floor before the texels'.
+        double t = Atan.atan2(dx, dz) * uScale + uOffset;
+        if (t >= texWidth) t -= texWidth;
+        else if (t < 0) t += texWidth;
         // asin(d.y/|d|) is the elevation atan2(d.y, √(d.x² + d.z²)): one square root, no clamp.
-        double v = 0.5 - Atan.atan2(dy, Math.sqrt(dx * dx + dz * dz)) / Math.PI;
-        double x = u * texWidth - 0.5, y = v * texHeight - 0.5;
+        double y = vOffset - Atan.atan2(dy, Math.sqrt(dx * dx + dz * dz)) * vScale;
+        double x = t - 0.5;
         double fx = Math.floor(x), fy = Math.floor(y);
         double ax = x - fx, ay = y - fy;
-        // u is in [0, 1], so fx in [−1, width − 1]: the wrap without an integer division.
+        // t is in [0, width], so fx in [−1, width − 1]: the wrap without an integer division.
         int x0 = (int) fx, x1 = x0 + 1;
         if (x0 < 0) x0 += texWidth;
         if (x1 == texWidth) x1 = 0;
@@ -176,7 +230,7 @@ final class BackgroundShader {
         int i00 = y0 * texWidth + x0, i01 = y0 * texWidth + x1, i10 = y1 * texWidth + x0, i11 = y1 * texWidth + x1;
         int[] p = packed;
         if (p != null) {
-            float[] lv = level;
+            double[] lv = level;
             int p00 = p[i00], p01 = p[i01], p10 = p[i10], p11 = p[i11];
             for (int c = 0, shift = 16; c < 3; c++, shift -= 8) {
                 double top = (1 - ax) * lv[p00 >> shift & 0xFF] + ax * lv[p01 >> shift & 0xFF];

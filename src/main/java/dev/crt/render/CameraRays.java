@@ -132,22 +132,44 @@ final class CameraRays {
      * pinhole ray meets the plane in focus, P + D·F/(D·f): with the lens offset L = O − P, its
      * direction is D·F/(D·f) − L, or D − L·(D·f)/F scaled by (D·f)/F. So D need not be a unit
      * vector (one normalisation, not two), and the point in focus is never formed (it overflows
-     * when the focal distance is near the largest double).
+     * when the focal distance is near the largest double). It allocates its scratch (a ray now
+     * and then, as the tests take); the renderer's samplers call {@link #aim} and
+     * {@link #throughLens(double[], double, double, double[], double[])} with their own.
      */
     void throughLens(int i, int j, double sx, double sy, double lx, double ly, double[] o, double[] d) {
+        double[] aim = new double[AIM];
+        aim(i, j, sx, sy, aim);
+        throughLens(aim, lx, ly, o, d);
+    }
+
+    /** The length of {@link #aim}'s output. */
+    static final int AIM = 4;
+
+    /**
+     * The part of {@link #throughLens} that depends on the sub-pixel only, once for all the lens
+     * samples of a sub-pixel (a grid sampler's 32 share it): the pinhole direction D (not unit) into
+     * {@code aim[0..2]} and (D·f)/F into {@code aim[3]}.
+     */
+    void aim(int i, int j, double sx, double sy, double[] aim) {
         double x = 2 * (i + sx) / width - 1;
         double y = 1 - 2 * (j + sy) / height;
         double a = x * halfHeight * aspect, b = y * halfHeight;
         double dx = fx + a * rx + b * ux, dy = fy + a * ry + b * uy, dz = fz + a * rz + b * uz;
-        double t = (dx * fx + dy * fy + dz * fz) / focalDistance;
+        aim[0] = dx;
+        aim[1] = dy;
+        aim[2] = dz;
+        aim[3] = (dx * fx + dy * fy + dz * fz) / focalDistance;
+    }
+
+    /** {@link #throughLens(int, int, double, double, double, double, double[], double[])} from the sub-pixel's {@link #aim}. */
+    void throughLens(double[] aim, double lx, double ly, double[] o, double[] d) {
+        double t = aim[3];
         double ox = lensRadius * (lx * rx + ly * ux), oy = lensRadius * (lx * ry + ly * uy),
                 oz = lensRadius * (lx * rz + ly * uz);
         o[0] = px + ox;
         o[1] = py + oy;
         o[2] = pz + oz;
-        dx -= ox * t;
-        dy -= oy * t;
-        dz -= oz * t;
+        double dx = aim[0] - ox * t, dy = aim[1] - oy * t, dz = aim[2] - oz * t;
         double inv = 1 / Math.sqrt(dx * dx + dy * dy + dz * dz);
         d[0] = dx * inv;
         d[1] = dy * inv;

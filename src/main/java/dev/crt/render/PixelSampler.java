@@ -37,6 +37,10 @@ final class PixelSampler {
     private final double[] origin = new double[3];
     private final double[] direction = new double[3];
     private final double[] lens = new double[2];
+    /** The sub-pixel's part of its lens rays, {@link CameraRays#aim}. */
+    private final double[] aim = new double[CameraRays.AIM];
+    /** Whether the pixel being sampled takes its block's list of candidates (asked once a pixel). */
+    private boolean blockRay;
     /** The jittered sampler's lens strata, in random orders: its Latin hypercube. */
     private final int[] lensStrataU, lensStrataV;
     private final int pilotCount, width, height;
@@ -94,6 +98,7 @@ final class PixelSampler {
         t.accG = 0;
         t.accB = 0;
         t.startPixel(i, j, seed, 0);
+        if (blocks) blockRay = t.candidates.block(camera, i, j);
         if (!Features.SAMPLERS) {
             grid(i, j);
         } else {
@@ -133,8 +138,9 @@ final class PixelSampler {
                     trace(i, j, sx, sy, weight);
                     continue;
                 }
+                camera.aim(i, j, sx, sy, aim);
                 for (int k = 0; k < lensSamples; k++) {
-                    traceThroughLens(i, j, sx, sy, random.next(), random.next(), random.next(), weight);
+                    throughLens(random.next(), random.next(), random.next(), weight);
                 }
             }
         }
@@ -263,6 +269,7 @@ final class PixelSampler {
         t.accG = 0;
         t.accB = 0;
         t.startPixel(i, j, seed, 1);
+        if (blocks) blockRay = t.candidates.block(camera, i, j);
         long h = PixelRandom.pixelHash(i, j, seed);
         for (int k = pilotCount; k < n; k++) {
             if ((k & STOP_RUN) == STOP_RUN && stop.getAsBoolean()) break;
@@ -284,7 +291,7 @@ final class PixelSampler {
     private void trace(int i, int j, double sx, double sy, double w) {
         camera.direction(i, j, sx, sy, direction);
         tracer.primaryRays++;
-        if (blocks) tracer.blockRay = tracer.candidates.block(camera, i, j);
+        if (blocks) tracer.blockRay = blockRay;
         if (Features.TEXTURES && tracer.footprints) tracer.spread = camera.spread(direction) * spreadShare;
         if (Features.ORIGINAL && original != null) {
             original.trace(camera.px, camera.py, camera.pz, direction[0], direction[1], direction[2], depth, 0, w, w, w);
@@ -294,10 +301,16 @@ final class PixelSampler {
     }
 
     private void traceThroughLens(int i, int j, double sx, double sy, double u1, double u2, double u3, double w) {
+        camera.aim(i, j, sx, sy, aim);
+        throughLens(u1, u2, u3, w);
+    }
+
+    /** A lens sample from three uniform numbers through the sub-pixel {@link #aim} was last given. */
+    private void throughLens(double u1, double u2, double u3, double w) {
         camera.aperture.sample(u1, u2, u3, lens);
-        camera.throughLens(i, j, sx, sy, lens[0], lens[1], origin, direction);
+        camera.throughLens(aim, lens[0], lens[1], origin, direction);
         tracer.primaryRays++;
-        if (blocks) tracer.blockRay = tracer.candidates.block(camera, i, j);
+        if (blocks) tracer.blockRay = blockRay;
         if (Features.TEXTURES && tracer.footprints) tracer.spread = camera.spread(direction) * spreadShare;
         if (Features.ORIGINAL && original != null) {
             original.trace(origin[0], origin[1], origin[2], direction[0], direction[1], direction[2], depth, 0, w, w, w);

@@ -34,6 +34,26 @@ class PictureFilesTest {
     }
 
     @Test
+    void theSameBytesAreDecodedOnceAndNewBytesAgain() throws IOException {
+        BufferedImage image = new BufferedImage(3, 2, BufferedImage.TYPE_INT_RGB);
+        image.setRGB(2, 1, 0x336699);
+        Path file = dir.resolve("sky.png");
+        ImageIO.write(image, "png", file.toFile());
+        Picture first = PictureFiles.read(file);
+        assertThat(PictureFiles.read(file)).isSameAs(first);
+        Path copy = Files.copy(file, dir.resolve("copy.png"));
+        assertThat(PictureFiles.read(copy)).isSameAs(first);
+        // Rewritten in place, same size and name, at once (the file's time may not even change).
+        image.setRGB(2, 1, 0x996633);
+        ImageIO.write(image, "png", file.toFile());
+        Picture changed = PictureFiles.read(file);
+        assertThat(changed).isNotSameAs(first);
+        assertThat(changed.get(2, 1, 0)).isEqualTo(0x99 / 255f);
+        assertThat(first.get(2, 1, 0)).isEqualTo(0x33 / 255f);
+        assertThat(PictureFiles.read(copy).get(2, 1, 0)).isEqualTo(0x33 / 255f);
+    }
+
+    @Test
     void decodesBinaryPpmWithComments() throws IOException {
         ByteArrayOutputStream out = new ByteArrayOutputStream();
         out.write("P6\n# made by hand\n2 1\n255\n".getBytes(StandardCharsets.US_ASCII));

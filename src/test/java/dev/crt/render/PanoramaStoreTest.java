@@ -60,6 +60,47 @@ class PanoramaStoreTest {
         }
     }
 
+    @Test
+    void onlyExactEightBitValuesGetACode() {
+        for (int k = 0; k < 256; k++) {
+            float v = k / 255f;
+            assertThat(BackgroundShader.code(v)).isEqualTo(k);
+            assertThat(BackgroundShader.code(Math.nextUp(v))).isEqualTo(-1);
+            if (k > 0) assertThat(BackgroundShader.code(Math.nextDown(v))).isEqualTo(-1);
+        }
+        assertThat(BackgroundShader.code(-0f)).isEqualTo(0);
+        for (float v : new float[] {-1f / 255, -0.4f, Float.NaN, 256f / 255, Float.POSITIVE_INFINITY, Float.NEGATIVE_INFINITY, 1e30f}) {
+            assertThat(BackgroundShader.code(v)).as("%s", v).isEqualTo(-1);
+        }
+    }
+
+    @Test
+    void aPictureIsPackedOnceAndAnotherGetsItsOwnTexels() {
+        SplittableRandom r = new SplittableRandom(5);
+        int w = 16, h = 8;
+        float[] a = new float[w * h * 3], b = new float[w * h * 3];
+        for (int i = 0; i < a.length; i++) {
+            a[i] = r.nextInt(256) / 255f;
+            b[i] = r.nextInt(256) / 255f;
+        }
+        Picture first = new Picture(w, h, a), second = new Picture(w, h, b);
+        BackgroundShader one = new BackgroundShader(new PanoramaBackground("a", first, 0), 2.2);
+        BackgroundShader again = new BackgroundShader(new PanoramaBackground("a", first, 0), 1);
+        assertThat(again.sharesTexels(one)).isTrue();
+        BackgroundShader other = new BackgroundShader(new PanoramaBackground("b", second, 0), 2.2);
+        assertThat(other.sharesTexels(one)).isFalse();
+        double[] got = new double[3], want = new double[3];
+        for (int i = 0; i < 2_000; i++) {
+            double dx = r.nextDouble(-1, 1), dy = r.nextDouble(-1, 1), dz = r.nextDouble(-1, 1);
+            other.shade(dx, dy, dz, got);
+            reference(second, 0, 2.2, dx, dy, dz, want);
+            for (int c = 0; c < 3; c++) assertThat(got[c]).isCloseTo(want[c], within(1e-9));
+            again.shade(dx, dy, dz, got);
+            reference(first, 0, 1, dx, dy, dz, want);
+            for (int c = 0; c < 3; c++) assertThat(got[c]).isCloseTo(want[c], within(1e-9));
+        }
+    }
+
     /** The panorama of rendering-model.md, written out plainly. */
     private static void reference(Picture p, double angle, double gamma, double dx, double dy, double dz, double[] out) {
         double len = Math.sqrt(dx * dx + dy * dy + dz * dz);
