@@ -35,12 +35,7 @@ class CsgPairTest {
         Material[] mats = {material(rgb(1, 0, 0), 1, 0, 1, 0, 0, 1), material(rgb(0, 1, 0), 1, 0, 1, 0, 0.5, 1.5)};
         Csg tree = new Csg(OPS[r.nextInt(OPS.length)], operand(r, mats), operand(r, mats), Transform.IDENTITY,
                 SourceSpan.NONE);
-        Shapes shapes = new Shapes();
-        Materials materials = new Materials();
-        CsgSolids csg = new CsgSolids();
-        int t = csg.add(tree, Transform.IDENTITY, shapes, p -> materials.indexOf(p.material()), new Aabb[1]);
-        CsgSolids.Scratch sc = new CsgSolids.Scratch(csg);
-        LineSpan span = new LineSpan();
+        Pair pair = new Pair(tree);
         Ray ray = new Ray();
         Hit fast = new Hit(), general = new Hit();
         for (int k = 0; k < 200; k++) {
@@ -51,8 +46,8 @@ class CsgPairTest {
             int kind = r.nextInt(3);
             double tMax = kind == 0 ? Double.POSITIVE_INFINITY : kind == 1 ? r.nextDouble() * 6 : r.nextInt(13) * 0.5;
             fast.t = general.t = -1;
-            boolean a = csg.closestHit(t, ray, tMax, shapes, materials, span, sc, fast);
-            boolean b = csg.walk(t, ray, tMax, general, shapes, materials, span, sc) != 0;
+            boolean a = pair.closestHit(ray, tMax, fast);
+            boolean b = pair.walk(ray, tMax, general) != 0;
             assertThat(a).as("hit at all").isEqualTo(b);
             if (a) {
                 assertThat(fast.t).as("distance").isEqualTo(general.t);
@@ -60,8 +55,8 @@ class CsgPairTest {
                 assertThat(fast.face).isEqualTo(general.face);
                 assertThat(fast.flip).isEqualTo(general.flip);
             }
-            assertThat(csg.transmittance(t, ray, tMax, shapes, materials, span, sc))
-                    .isEqualTo(csg.walk(t, ray, tMax, null, shapes, materials, span, sc));
+            assertThat(pair.transmittance(ray, tMax))
+                    .isEqualTo(pair.walk(ray, tMax, null));
         }
     }
 
@@ -76,22 +71,44 @@ class CsgPairTest {
         double eps = 1e-15;
         Csg tree = new Csg(CsgOperation.DIFFERENCE, sphere(v(0, 0, 0), 1, m), box(v(-5, -5, -5), v(-1 - eps, 5, 5), m),
                 Transform.IDENTITY, SourceSpan.NONE);
-        Shapes shapes = new Shapes();
-        Materials materials = new Materials();
-        CsgSolids csg = new CsgSolids();
-        int t = csg.add(tree, Transform.IDENTITY, shapes, p -> materials.indexOf(p.material()), new Aabb[1]);
-        CsgSolids.Scratch sc = new CsgSolids.Scratch(csg);
-        LineSpan span = new LineSpan();
+        Pair pair = new Pair(tree);
         Ray ray = new Ray();
         ray.set(-3, 0, 0, 1, 0, 0);
         double tMax = 2 - eps / 2;
         Hit fast = new Hit(), general = new Hit();
-        assertThat(csg.walk(t, ray, tMax, general, shapes, materials, span, sc)).isEqualTo(1);
+        assertThat(pair.walk(ray, tMax, general)).isEqualTo(1);
         assertThat(general.t).isLessThan(tMax);
-        assertThat(csg.closestHit(t, ray, tMax, shapes, materials, span, sc, fast)).isTrue();
+        assertThat(pair.closestHit(ray, tMax, fast)).isTrue();
         assertThat(fast.t).isEqualTo(general.t);
         assertThat(fast.shape).isEqualTo(general.shape);
-        assertThat(csg.transmittance(t, ray, tMax, shapes, materials, span, sc)).isEqualTo(0.0);
+        assertThat(pair.transmittance(ray, tMax)).isEqualTo(0.0);
+    }
+
+    /** A CSG tree added to fresh stores as the renderer adds one, and its three queries. */
+    private static final class Pair {
+        private final Shapes shapes = new Shapes();
+        private final Materials materials = new Materials();
+        private final CsgSolids csg = new CsgSolids();
+        private final LineSpan span = new LineSpan();
+        private final int tree;
+        private final CsgSolids.Scratch scratch;
+
+        Pair(Csg tree) {
+            this.tree = csg.add(tree, Transform.IDENTITY, shapes, p -> materials.indexOf(p.material()), new Aabb[1]);
+            scratch = new CsgSolids.Scratch(csg);
+        }
+
+        boolean closestHit(Ray ray, double tMax, Hit hit) {
+            return csg.closestHit(tree, ray, tMax, shapes, materials, span, scratch, hit);
+        }
+
+        double walk(Ray ray, double tMax, Hit hit) {
+            return csg.walk(tree, ray, tMax, hit, shapes, materials, span, scratch);
+        }
+
+        double transmittance(Ray ray, double tMax) {
+            return csg.transmittance(tree, ray, tMax, shapes, materials, span, scratch);
+        }
     }
 
     /** Coordinates on a half-unit grid, so that operands share faces and rays run along them. */
