@@ -583,7 +583,8 @@ final class Tracer {
         shadowRays++;
         ray.set(ox, oy, oz, wx, wy, wz);
         int cached = lastOccluder[light];
-        if (cached != NONE && itemTransmittance(cached, tMax) == 0) return 0;
+        // A list holds every item the segment can meet: an occluder not in it is not tested.
+        if (cached != NONE && (list < 0 || listed(list, cached)) && itemTransmittance(cached, tMax) == 0) return 0;
         double product = 1;
         for (int item : unbounded) {
             product *= itemTransmittance(item, tMax);
@@ -627,6 +628,13 @@ final class Tracer {
         depthR += materials[m + Materials.AR] * inside;
         depthG += materials[m + Materials.AG] * inside;
         depthB += materials[m + Materials.AB] * inside;
+    }
+
+    /** Whether the list at {@code list} of {@link Candidates#pool} holds {@code item}. */
+    private boolean listed(int list, int item) {
+        int[] pool = candidates.pool;
+        for (int k = list + 1, end = k + pool[list]; k < end; k++) if (pool[k] == item) return true;
+        return false;
     }
 
     private double blockedBy(int light, int item) {
