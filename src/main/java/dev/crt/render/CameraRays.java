@@ -126,29 +126,13 @@ final class CameraRays {
         d[2] = a * rz + b * uz + c * fz;
     }
 
-    /**
-     * The thin-lens ray of sample (sx, sy) of pixel (i, j) through lens point (lx, ly): origin into
-     * {@code o[0..2]}, unit direction into {@code d[0..2]}. The ray aims at the point where the
-     * pinhole ray meets the plane in focus, P + D·F/(D·f): with the lens offset L = O − P, its
-     * direction is D·F/(D·f) − L, or D − L·(D·f)/F scaled by (D·f)/F. So D need not be a unit
-     * vector (one normalisation, not two), and the point in focus is never formed (it overflows
-     * when the focal distance is near the largest double). It allocates its scratch (a ray now
-     * and then, as the tests take); the renderer's samplers call {@link #aim} and
-     * {@link #throughLens(double[], double, double, double[], double[])} with their own.
-     */
-    void throughLens(int i, int j, double sx, double sy, double lx, double ly, double[] o, double[] d) {
-        double[] aim = new double[AIM];
-        aim(i, j, sx, sy, aim);
-        throughLens(aim, lx, ly, o, d);
-    }
-
     /** The length of {@link #aim}'s output. */
     static final int AIM = 4;
 
     /**
-     * The part of {@link #throughLens} that depends on the sub-pixel only, once for all the lens
-     * samples of a sub-pixel (a grid sampler's 32 share it): the pinhole direction D (not unit) into
-     * {@code aim[0..2]} and (D·f)/F into {@code aim[3]}.
+     * The part of {@link #throughLens} that depends on sample (sx, sy) of pixel (i, j) only, made
+     * once for all the lens samples of a sub-pixel (a grid sampler's 32 share it): the pinhole
+     * direction D (not unit) into {@code aim[0..2]} and (D·f)/F into {@code aim[3]}.
      */
     void aim(int i, int j, double sx, double sy, double[] aim) {
         double x = 2 * (i + sx) / width - 1;
@@ -161,7 +145,14 @@ final class CameraRays {
         aim[3] = (dx * fx + dy * fy + dz * fz) / focalDistance;
     }
 
-    /** {@link #throughLens(int, int, double, double, double, double, double[], double[])} from the sub-pixel's {@link #aim}. */
+    /**
+     * The thin-lens ray of the sub-pixel whose {@link #aim} is given, through lens point (lx, ly):
+     * origin into {@code o[0..2]}, unit direction into {@code d[0..2]}. The ray aims at the point where the
+     * pinhole ray meets the plane in focus, P + D·F/(D·f): with the lens offset L = O − P, its
+     * direction is D·F/(D·f) − L, or D − L·(D·f)/F scaled by (D·f)/F. So D need not be a unit
+     * vector (one normalisation, not two), and the point in focus is never formed (it overflows
+     * when the focal distance is near the largest double).
+     */
     void throughLens(double[] aim, double lx, double ly, double[] o, double[] d) {
         double t = aim[3];
         double ox = lensRadius * (lx * rx + ly * ux), oy = lensRadius * (lx * ry + ly * uy),

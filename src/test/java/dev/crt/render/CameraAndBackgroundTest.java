@@ -28,7 +28,9 @@ class CameraAndBackgroundTest {
         Vec3 focus = c.position().plus(dir0.times(4.5 / dir0.dot(f)));
         for (int k = 0; k < 200; k++) {
             cam.aperture.sample(rnd.next(), rnd.next(), rnd.next(), lens);
-            cam.throughLens(5, 7, 0.5, 0.5, lens[0], lens[1], o, d);
+            double[] aim = new double[CameraRays.AIM];
+            cam.aim(5, 7, 0.5, 0.5, aim);
+            cam.throughLens(aim, lens[0], lens[1], o, d);
             Vec3 origin = new Vec3(o[0], o[1], o[2]), dir = new Vec3(d[0], d[1], d[2]);
             assertThat(origin.minus(c.position()).length()).isLessThanOrEqualTo(0.25 + 1e-12);
             assertThat(focus.minus(origin).cross(dir).length()).isLessThan(1e-12);
@@ -188,7 +190,9 @@ class CameraAndBackgroundTest {
         double[] d0 = new double[3], o = new double[3], d = new double[3];
         for (int i = 0; i < 64; i += 9) {
             cam.direction(i, 40, 0.5, 0.5, d0);
-            cam.throughLens(i, 40, 0.5, 0.5, 0.6, -0.7, o, d);
+            double[] aim = new double[CameraRays.AIM];
+            cam.aim(i, 40, 0.5, 0.5, aim);
+            cam.throughLens(aim, 0.6, -0.7, o, d);
             assertThat(d).containsExactly(d0, within(1e-12));
             assertThat(new Vec3(o[0], o[1], o[2]).minus(c.position()).length()).isCloseTo(0.25 * Math.hypot(0.6, 0.7), within(1e-12));
         }

@@ -118,7 +118,9 @@ class CandidatesTest {
                 if (lens) {
                     // The lens's rim (u1 near 1) as often as anywhere on it.
                     camera.aperture.sample(r.nextBoolean() ? Math.nextDown(1.0) : r.nextDouble(), r.nextDouble(), r.nextDouble(), l);
-                    camera.throughLens(i, j, sx, sy, l[0], l[1], o, d);
+                    double[] aim = new double[CameraRays.AIM];
+                    camera.aim(i, j, sx, sy, aim);
+                    camera.throughLens(aim, l[0], l[1], o, d);
                 }
                 boolean lone = t.closestHit(o[0], o[1], o[2], d[0], d[1], d[2], Double.POSITIVE_INFINITY);
                 double tLone = t.hit.t;

@@ -19,7 +19,7 @@ import org.junit.jupiter.api.Test;
 /**
  * The grid sampler with a lens, which makes a sub-pixel's part of its lens rays once for all of
  * them: every pixel is the mean of the rays made one by one from their sub-pixel centres and lens
- * points ({@link CameraRays#throughLens(int, int, double, double, double, double, double[], double[])}).
+ * points ({@link CameraRays#aim} and {@link CameraRays#throughLens}).
  */
 class GridLensSamplesTest {
     @Test
@@ -43,7 +43,9 @@ class GridLensSamplesTest {
                             for (int k = 0; k < m; k++) {
                                 double u1 = random.next(), u2 = random.next(), u3 = random.next();
                                 camera.aperture.sample(u1, u2, u3, lens);
-                                camera.throughLens(i, j, (a + 0.5) / n, (b + 0.5) / n, lens[0], lens[1], o, d);
+                                double[] aim = new double[CameraRays.AIM];
+                                camera.aim(i, j, (a + 0.5) / n, (b + 0.5) / n, aim);
+                                camera.throughLens(aim, lens[0], lens[1], o, d);
                                 sky.shade(d[0], d[1], d[2], c);
                                 for (int q = 0; q < 3; q++) sum[q] += c[q] / (n * n * m);
                             }
