@@ -11,7 +11,8 @@ import java.util.*;
  * java bench/SideBySide.java BASE.jar NEW.jar SCENE.crt WIDTH HEIGHT ROUNDS [SAMPLER]
  * SAMPLER (grid, jittered, sobol, adaptive) is given to each jar that knows samplers, as
  * {@code --sampler} would be: {@code grid} makes a build with samplers draw the same picture as a
- * build from before them (f05acbf) on a scene with a lens, where its default differs.
+ * build from before them (f05acbf) on a scene with a lens, where its default differs. Each build
+ * renders as {@code crt render} does for a PNG file (see {@link #forPng}).
  */
 public class SideBySide {
     public static void main(String[] a) throws Exception {
@@ -34,7 +35,7 @@ public class SideBySide {
             Object name = sceneC.getMethod("sourceName").invoke(scene), ents = sceneC.getMethod("entities").invoke(scene);
             scene = sceneC.getConstructor(String.class, settingsC, List.class).newInstance(name, settings, ents);
             Class<?> rc = cl.loadClass("dev.crt.render.Renderer"), mon = cl.loadClass("dev.crt.render.RenderMonitor");
-            renderers[k] = rc.getMethod("prepare", sceneC).invoke(null, scene);
+            renderers[k] = forPng(rc, rc.getMethod("prepare", sceneC).invoke(null, scene));
             render[k] = rc.getMethod("render", int.class, mon);
             none[k] = mon.getField("NONE").get(null);
         }
@@ -54,6 +55,20 @@ public class SideBySide {
         System.out.printf("base median CPU %.3f s, new median CPU %.3f s, new/base %.4f%n", m0, m1, m1 / m0);
         System.out.println("base " + cpu.get(0));
         System.out.println("new  " + cpu.get(1));
+    }
+
+    /**
+     * The renderer as {@code crt render} uses it for a .png file: {@code forClampedOutput()} where the
+     * build has it (pixels stop once they are white; the same PNG), else as prepared. The system
+     * property {@code sidebyside.linear=true} keeps every build's plain renderer (as for .pfm).
+     */
+    private static Object forPng(Class<?> rc, Object renderer) throws Exception {
+        if (Boolean.getBoolean("sidebyside.linear")) return renderer;
+        try {
+            return rc.getMethod("forClampedOutput").invoke(renderer);
+        } catch (NoSuchMethodException e) {
+            return renderer;
+        }
     }
 
     /** The settings with the named sampler, or as they are when this build has no samplers. */

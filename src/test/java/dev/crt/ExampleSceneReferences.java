@@ -25,7 +25,7 @@ import java.util.stream.Stream;
  * (mvn -q test-compile exec, or from an IDE) only when a change of the pictures is intended, and
  * say in the commit what changed in them and why.
  */
-final class ExampleSceneReferences {
+public final class ExampleSceneReferences {
     static final int WIDTH = 48, HEIGHT = 27;
     static final Path FOLDER = Path.of("src/test/resources/example-scenes");
 
@@ -56,7 +56,7 @@ final class ExampleSceneReferences {
     }
 
     /** The linear floats of a PFM file (little-endian, rows bottom to top), rows top to bottom. */
-    static float[] readPfm(Path file) throws IOException {
+    public static float[] readPfm(Path file) throws IOException {
         byte[] bytes = Files.readAllBytes(file);
         int newlines = 0, start = 0;
         while (newlines < 3) if (bytes[start++] == '\n') newlines++;

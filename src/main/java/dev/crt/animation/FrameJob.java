@@ -47,6 +47,7 @@ public final class FrameJob {
         } catch (FeatureSwitchedOffException e) {
             throw new FrameFailure(FrameFailure.Kind.SETTINGS, e.getMessage());
         }
+        if (ImageFiles.clampsColours(out)) renderer = renderer.forClampedOutput();
         FrameBuffer image = renderer.render(threads, monitor);
         long start = System.nanoTime();
         try {

@@ -54,6 +54,12 @@ public final class ImageFiles {
         return e.getMessage() == null ? e.getClass().getSimpleName() : e.getMessage();
     }
 
+    /** Whether the file {@code out} names stores each channel clamped to [0, 1] (.png, .ppm; not .pfm, which holds linear light). */
+    public static boolean clampsColours(Path out) {
+        String name = out.getFileName() == null ? "" : out.getFileName().toString().toLowerCase(Locale.ROOT);
+        return name.endsWith(".png") || name.endsWith(".ppm");
+    }
+
     private static ImageWriter writerFor(Path out) throws IOException {
         String name = out.getFileName() == null ? "" : out.getFileName().toString();
         int dot = name.lastIndexOf('.');

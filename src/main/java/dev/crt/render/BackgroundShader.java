@@ -161,6 +161,17 @@ final class BackgroundShader {
         return v <= 0.04045 ? v / 12.92 : Math.pow((v + 0.055) / 1.055, 2.4);
     }
 
+    /** Whether every colour this background gives is non-negative (a panorama's 8-bit texels always are). */
+    boolean nonNegative() {
+        if (!(r0 >= 0 && g0 >= 0 && b0 >= 0 && r1 >= 0 && g1 >= 0 && b1 >= 0)) return false;
+        if (texels != null) {
+            for (float v : texels) {
+                if (!(v >= 0)) return false;
+            }
+        }
+        return true;
+    }
+
     /** Writes the background seen along direction d (any length) into {@code out[0..2]}. */
     void shade(double dx, double dy, double dz, double[] out) {
         switch (kind) {

@@ -106,6 +106,14 @@ final class Lights {
         random = anyRandom;
     }
 
+    /** Whether no light takes light away: every colour and ambient sum non-negative (falloffs, cones and areas weigh by factors ≥ 0). */
+    boolean nonNegative() {
+        for (int i = 0; i < count; i++) {
+            if (!(r[i] >= 0 && g[i] >= 0 && b[i] >= 0)) return false;
+        }
+        return ambientR >= 0 && ambientG >= 0 && ambientB >= 0;
+    }
+
     private void axis(int i, Vec3 a) {
         ax[i] = a.x();
         ay[i] = a.y();

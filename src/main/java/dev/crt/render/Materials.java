@@ -164,6 +164,22 @@ final class Materials {
         return false;
     }
 
+    /**
+     * Whether every material only adds light: colour, diffuse, specular, reflectivity and emission
+     * non-negative and transparency in [0, 1], so that every term of a pixel's sum is non-negative
+     * (its textures, which may compute their values, are not looked at: ask only without them).
+     */
+    boolean nonNegative() {
+        for (int k = 0; k < count; k++) {
+            int m = k * STRIDE;
+            for (int slot : new int[] {R, G, B, DIFFUSE, SPECULAR, REFLECTIVITY, ER, EG, EB}) {
+                if (!(data[m + slot] >= 0)) return false;
+            }
+            if (!(data[m + TRANSPARENCY] >= 0 && data[m + TRANSPARENCY] <= 1)) return false;
+        }
+        return true;
+    }
+
     /** Whether some material shades with the Gooch model. */
     boolean gooch() {
         for (int k = 0; k < count; k++) {

@@ -5,7 +5,8 @@ package dev.crt.render;
  * of Sℓ·Aℓ·wℓ·(kd·max(0,N·ω)(Cℓ⊙C) + ks·max(0,R·V)^n·Cℓ), where wℓ is the factor of the light's
  * kind (1, a spot's cone, an area sample's cosine and share) and Sℓ the shadow factor of its
  * tracer (with Beer's-law absorption per channel when the scene has absorbing materials). One per
- * render thread; a light sample whose diffuse and specular terms are both zero casts no shadow ray.
+ * render thread; a light sample whose diffuse and specular terms are both zero casts no shadow ray,
+ * and none is cast once the pixel's sum is sure to reach 1 ({@link Tracer#saturating}).
  */
 final class PhongShading {
     private final Tracer tracer;
@@ -37,6 +38,8 @@ final class PhongShading {
         Lights l = lights;
         LightSample ls = sample;
         Tracer t = tracer;
+        boolean saturating = t.saturating;
+        lights:
         for (int i = 0; i < l.count; i++) {
             byte kind = l.kind[i];
             for (int k = 0, samples = l.sampleCount(i); k < samples; k++) {
@@ -71,6 +74,10 @@ final class PhongShading {
                     if (rv > 0) specular = ks * Tracer.power(rv, shininess);
                 }
                 if (diffuse == 0 && specular == 0) continue;
+                // The pixel's sum with this colour so far added already reaches 1: the rest cannot lower it.
+                if (saturating && t.accR + t.localR * r >= 1 && t.accG + t.localG * g >= 1 && t.accB + t.localB * b >= 1) {
+                    break lights;
+                }
                 double side = nw > 0 ? delta : -delta;
                 double s = kind == Lights.POINT
                         ? t.shadowTo(px + side * gx, py + side * gy, pz + side * gz, l.x[i], l.y[i], l.z[i], side, i)

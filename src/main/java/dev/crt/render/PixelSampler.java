@@ -51,6 +51,8 @@ final class PixelSampler {
 
     /** Whether camera rays take their block's list of candidates (a perspective camera, CRT's model, a BVH). */
     private final boolean blocks;
+    /** Whether a pixel stops once its sum reaches 1 ({@link Tracer#saturating}). */
+    private final boolean saturating;
 
     /** Asked between rows of sub-pixels (and runs of samples), so that a cancel is prompt however many samples a pixel takes. */
     private final BooleanSupplier stop;
@@ -84,6 +86,7 @@ final class PixelSampler {
         spreadShare = 1.0 / grid;
         this.pilotVariance = pilotVariance;
         blocks = tracer.candidates != null && camera.framed() && original == null;
+        saturating = tracer.saturating;
     }
 
     /** Whether camera rays take their block's list of candidates: pixels are best visited block by block. */
@@ -134,12 +137,14 @@ final class PixelSampler {
             double sy = (b + gridOffset) / grid;
             for (int a = 0; a < grid; a++) {
                 double sx = (a + gridOffset) / grid;
+                if (saturating && tracer.saturated()) return;
                 if (!camera.hasLens()) {
                     trace(i, j, sx, sy, weight);
                     continue;
                 }
                 camera.aim(i, j, sx, sy, aim);
                 for (int k = 0; k < lensSamples; k++) {
+                    if (saturating && k > 0 && tracer.saturated()) return;
                     throughLens(random.next(), random.next(), random.next(), weight);
                 }
             }
@@ -162,11 +167,13 @@ final class PixelSampler {
         for (int b = 0; b < grid; b++) {
             if (b > 0 && stop.getAsBoolean()) return;
             for (int a = 0; a < grid; a++) {
+                if (saturating && tracer.saturated()) return;
                 if (!camera.hasLens()) {
                     trace(i, j, (a + random.next()) / grid, (b + random.next()) / grid, weight);
                     continue;
                 }
                 for (int l = 0; l < lensSamples; l++, k++) {
+                    if (saturating && l > 0 && tracer.saturated()) return;
                     double sx = (a + random.next()) / grid, sy = (b + random.next()) / grid;
                     double u1 = (lensStrataU[k] + random.next()) / budget, u2 = (lensStrataV[k] + random.next()) / budget;
                     traceThroughLens(i, j, sx, sy, u1, u2, random.next(), weight);
@@ -191,6 +198,7 @@ final class PixelSampler {
         long h = PixelRandom.pixelHash(i, j, seed);
         for (int k = 0; k < budget; k++) {
             if ((k & STOP_RUN) == STOP_RUN && stop.getAsBoolean()) return;
+            if (saturating && tracer.saturated()) return;
             sobolSample(i, j, k, h, weight);
         }
     }

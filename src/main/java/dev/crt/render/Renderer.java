@@ -31,6 +31,8 @@ public final class Renderer {
     private final Lights lights;
     private final BackgroundShader background;
     private final long buildNanos;
+    /** Whether the picture goes to an output that clamps each channel at 1 ({@link #forClampedOutput}). */
+    private final boolean clampedOutput;
     private volatile RenderStats stats;
 
     private Renderer(Scene scene) {
@@ -44,17 +46,20 @@ public final class Renderer {
         background = new BackgroundShader(settings.effectiveBackground(), settings.outputGamma(),
                 settings.shading() == Shading.ORIGINAL);
         buildNanos = System.nanoTime() - start;
+        clampedOutput = false;
         stats = new RenderStats(0, 0, 0, 0, buildNanos, 0);
     }
 
-    private Renderer(Renderer prepared, Settings settings) {
+    /** {@code prepared} with other settings; {@code buildNanos} is the build time its stats report. */
+    private Renderer(Renderer prepared, Settings settings, boolean clampedOutput, long buildNanos) {
         this.settings = settings;
         entities = prepared.entities;
         geometry = prepared.geometry;
         lights = prepared.lights;
         background = prepared.background;
-        buildNanos = 0;
-        stats = new RenderStats(0, 0, 0, 0, 0, 0);
+        this.buildNanos = buildNanos;
+        this.clampedOutput = clampedOutput;
+        stats = new RenderStats(0, 0, 0, 0, buildNanos, 0);
     }
 
     /**
@@ -70,7 +75,27 @@ public final class Renderer {
      * so that a quick preview pass costs no second build. Camera, lights and background stay.
      */
     public Renderer withImage(int width, int height, int supersampling, int dofSamples) {
-        return new Renderer(this, settings.withSize(width, height).withSampling(supersampling, dofSamples));
+        return new Renderer(this, settings.withSize(width, height).withSampling(supersampling, dofSamples), clampedOutput, 0);
+    }
+
+    /**
+     * This prepared scene rendered for an output that clamps each channel to [0, 1] before it
+     * stores it (8-bit PNG and PPM, GIF, the screen): where every colour of the scene is
+     * non-negative, a pixel's sum only grows as its rays add to it, so a pixel stops tracing once
+     * the sum reaches 1 in every channel. The file is the same to the bit;
+     * the image's values of 1 or more are then not the pixel's full colour, so PFM and any use of
+     * the linear values need the plain renderer. Scenes with negative colours, textures, Gooch
+     * shading, the 2015 model or the adaptive sampler render as without it.
+     */
+    public Renderer forClampedOutput() {
+        return new Renderer(this, settings, true, buildNanos);
+    }
+
+    /** Whether pixels of this render stop at 1: see {@link #forClampedOutput}. */
+    private boolean saturating() {
+        return clampedOutput && settings.shading() != Shading.ORIGINAL && settings.effectiveSampler() != Sampler.ADAPTIVE
+                && !geometry.materials.gooch() && geometry.materials.textures.isEmpty() && geometry.materials.nonNegative()
+                && lights.nonNegative() && background.nonNegative();
     }
 
     /**
@@ -99,10 +124,12 @@ public final class Renderer {
         long total = (long) width * height * passes;
         List<Tracer> tracers = new ArrayList<>();
         List<Runnable> pool = new ArrayList<>();
+        boolean saturating = saturating();
         // Tells the monitor the counted work begins now, before the first tile is done.
         monitor.progress(0, total);
         for (int w = 0; w < workers; w++) {
             Tracer tracer = new Tracer(geometry, lights, background);
+            tracer.saturating = saturating;
             tracers.add(tracer);
             OriginalShading original = settings.shading() == Shading.ORIGINAL
                     ? new OriginalShading(tracer, geometry, lights, background) : null;

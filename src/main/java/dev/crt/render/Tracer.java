@@ -88,7 +88,16 @@ final class Tracer {
     /** The Beer's-law factors exp(−a·s) of the last {@link #shadow} ray, when {@link #absorbing}. */
     double shadowR = 1, shadowG = 1, shadowB = 1;
 
+    /** The pixel's sum so far: each ray adds its weight times its colour. */
     double accR, accG, accB;
+    /**
+     * Whether tracing may stop once the pixel's sum reaches 1 in every channel ({@link Renderer#forClampedOutput}
+     * on a scene whose colours are all non-negative, so that the sum only grows): such a pixel is
+     * white in the file whatever else it would add.
+     */
+    boolean saturating;
+    /** The weights (wr, wg, wb)·(1 − kt) of the local colour being shaded, for {@link PhongShading}'s test of the sum. */
+    double localR, localG, localB;
     long primaryRays, shadowRays, reflectedRays, refractedRays;
 
     Tracer(SceneGeometry geometry, Lights lights, BackgroundShader background) {
@@ -127,6 +136,7 @@ final class Tracer {
         blockRay = false;
         int from = reflectedFrom;
         reflectedFrom = NONE;
+        if (saturating && saturated()) return;
         if (!(block ? blockHit(ox, oy, oz, dx, dy, dz)
                 : from != NONE ? reflectedHit(from, reflectedFace, ox, oy, oz, dx, dy, dz)
                 : closestHit(ox, oy, oz, dx, dy, dz, Double.POSITIVE_INFINITY))) {
@@ -197,6 +207,9 @@ final class Tracer {
             // normal; shadow rays still leave along the geometric normal.
             shading = s;
             shadingFace = hit.face;
+            localR = wr * local;
+            localG = wg * local;
+            localB = wb * local;
             if (Features.GOOCH && gooch != null && mat[m + Materials.MODEL] == Materials.GOOCH) {
                 gooch.shade(m, cr, cg, cb, ks, er, eg, eb, px, py, pz, snx, sny, snz, -dx, -dy, -dz, colour);
             } else if (Features.SHAPES && surface.shaded) {
@@ -262,6 +275,11 @@ final class Tracer {
             }
         }
         if (Features.TEXTURES) travelled = start;
+    }
+
+    /** Whether the pixel's sum has reached 1 in every channel: with {@link #saturating}, the pixel is finished. */
+    boolean saturated() {
+        return accR >= 1 && accG >= 1 && accB >= 1;
     }
 
     /**
