@@ -15,22 +15,22 @@ import org.junit.jupiter.api.Test;
  */
 class PanoramaStoreTest {
     @Test
-    void atanAgreesWithTheLibraryToTheLastFewBits() {
+    void atanAgreesWithTheLibraryWellWithinATexel() {
         SplittableRandom r = new SplittableRandom(7);
         double[] special = {0.0, -0.0, 1, -1, 1e-300, -1e-300, 3, -3};
         for (double y : special) {
-            for (double x : special) assertThat(Atan.atan2(y, x)).as("atan2(%s, %s)", y, x).isCloseTo(Math.atan2(y, x), within(1e-15));
+            for (double x : special) assertThat(Atan.atan2(y, x)).as("atan2(%s, %s)", y, x).isCloseTo(Math.atan2(y, x), within(4e-11));
         }
         for (int i = 0; i < 200_000; i++) {
             double x = r.nextDouble(-1, 1) * Math.pow(10, r.nextInt(-6, 7)), y = r.nextDouble(-1, 1) * Math.pow(10, r.nextInt(-6, 7));
             if (i % 5 == 0) y = i % 10 == 0 ? x : -x;
-            assertThat(Atan.atan2(y, x)).isCloseTo(Math.atan2(y, x), within(1e-15));
+            assertThat(Atan.atan2(y, x)).isCloseTo(Math.atan2(y, x), within(4e-11));
             // Either side of tan(π/8), where the reduction changes: the polynomial's far end.
             double t = Math.tan(Math.PI / 8) * (1 + r.nextDouble(-1e-9, 1e-9));
-            assertThat(Atan.atan2(t * x, x)).isCloseTo(Math.atan2(t * x, x), within(1e-15));
+            assertThat(Atan.atan2(t * x, x)).isCloseTo(Math.atan2(t * x, x), within(4e-11));
             // The panorama's elevation: asin(s) as atan2(s, √(1 − s²)), also where s nears ±1.
             double s = i % 3 == 0 ? Math.copySign(1 - r.nextDouble() * 1e-6, x) : r.nextDouble(-1, 1);
-            assertThat(Atan.atan2(s, Math.sqrt((1 - s) * (1 + s)))).isCloseTo(Math.asin(s), within(1e-15));
+            assertThat(Atan.atan2(s, Math.sqrt((1 - s) * (1 + s)))).isCloseTo(Math.asin(s), within(4e-11));
         }
         assertThat(Atan.atan2(1, 0)).isEqualTo(Math.PI / 2);
         assertThat(Atan.atan2(-2, 0)).isEqualTo(-Math.PI / 2);
