@@ -164,6 +164,9 @@ final class Materials {
         return false;
     }
 
+    /** The slots {@link #nonNegative} asks to be at least 0. */
+    private static final int[] ADDING = {R, G, B, DIFFUSE, SPECULAR, REFLECTIVITY, ER, EG, EB};
+
     /**
      * Whether every material only adds light: colour, diffuse, specular, reflectivity and emission
      * non-negative and transparency in [0, 1], so that every term of a pixel's sum is non-negative
@@ -172,7 +175,7 @@ final class Materials {
     boolean nonNegative() {
         for (int k = 0; k < count; k++) {
             int m = k * STRIDE;
-            for (int slot : new int[] {R, G, B, DIFFUSE, SPECULAR, REFLECTIVITY, ER, EG, EB}) {
+            for (int slot : ADDING) {
                 if (!(data[m + slot] >= 0)) return false;
             }
             if (!(data[m + TRANSPARENCY] >= 0 && data[m + TRANSPARENCY] <= 1)) return false;

@@ -80,7 +80,7 @@ public final class Renderer {
 
     /**
      * This prepared scene rendered for an output that clamps each channel to [0, 1] before it
-     * stores it (8-bit PNG and PPM, GIF, the screen): where every colour of the scene is
+     * stores it (8-bit PNG and PPM files, and the GIFs made of them): where every colour of the scene is
      * non-negative, a pixel's sum only grows as its rays add to it, so a pixel stops tracing once
      * the sum reaches 1 in every channel. The file is the same to the bit;
      * the image's values of 1 or more are then not the pixel's full colour, so PFM and any use of
