@@ -111,11 +111,21 @@ final class Candidates {
     double[] near = new double[1024];
     private int poolSize;
     /**
-     * Per light (and one more for reflected rays): the key and record whose list the last listed
-     * ray took, tested first, since neighbouring rays mostly leave the same face (only records with a
-     * list are cached, so its list field is one).
+     * Per light (and one more for reflected rays), {@link #WAYS} entries, a shape's face hashed to
+     * one: the key and record whose list the last listed ray from there took, tested first, since
+     * neighbouring rays mostly leave the same face (only records with a list are cached, so its list
+     * field is one). A pixel's rays alternate between the surfaces its camera rays and their
+     * reflections hit: one entry per light sent half of drops.crt's shadow rays to {@link #search}.
      */
     private final int[] cacheKey, cacheRecord;
+    static final int LOG_WAYS = 3, WAYS = 1 << LOG_WAYS;
+    /** Calls of {@link #search}: lookups the cache did not answer (one that makes a record counts twice). */
+    long searches;
+
+    /** The cache entry, of a light's {@link #WAYS}, of rays leaving shape's face (a multiplicative hash). */
+    static int way(int shape, int face) {
+        return (shape * 8 + face) * 0x9E3779B1 >>> (32 - LOG_WAYS);
+    }
     /** The record whose ray is walking on trial, or −1. */
     private int trialRecord = -1;
     /** The direction box of the reflected-ray list being built, and the largest length of a direction in it. */
@@ -137,8 +147,8 @@ final class Candidates {
         for (double v : bvh.root) size = Math.max(size, Math.abs(v));
         sceneSize = size;
         lists = (long) shapes.count() * (lights.count + 1) <= MAX_PAIRS;
-        cacheKey = new int[lights.count + 1];
-        cacheRecord = new int[lights.count + 1];
+        cacheKey = new int[(lights.count + 1) * WAYS];
+        cacheRecord = new int[(lights.count + 1) * WAYS];
         Arrays.fill(cacheKey, -1);
     }
 
@@ -291,7 +301,8 @@ final class Candidates {
         if (shapes.kind[shape] != Shapes.BOX) face = 0;
         int[] rc = records;
         double[] r = regions;
-        int slot = light < 0 ? lights.count : light, cached = cacheRecord[slot];
+        int slot = (light < 0 ? lights.count : light) * WAYS + way(shape, face);
+        int cached = cacheRecord[slot];
         if (cacheKey[slot] == key && rc[RECORD * cached + 4] == face) {
             int k = 12 * cached;
             if (ox >= r[k] && oy >= r[k + 1] && oz >= r[k + 2] && ox <= r[k + 3] && oy <= r[k + 4] && oz <= r[k + 5]
@@ -305,6 +316,7 @@ final class Candidates {
     /** {@link #lookup} past the cached record: the key's records of that face, a trial, a growth or a new record. */
     private int search(int key, int shape, int face, int light, int slot, double ox, double oy, double oz, double dx, double dy,
             double dz) {
+        searches++;
         int[] st = state, rc = records;
         double[] r = regions;
         int heads = st[key] - 1;

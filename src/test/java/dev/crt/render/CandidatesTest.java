@@ -379,6 +379,48 @@ class CandidatesTest {
         assertThat(listing.hit.face).as(what).isEqualTo(walking.hit.face);
     }
 
+    /**
+     * A pixel's shadow rays leave the surfaces its camera rays and their reflections hit, in turn:
+     * rays leaving two columns' tops by turns find their lists in the cache once those are built,
+     * without searching the records (one cache entry per light searched every time).
+     */
+    @Test
+    void shadowRaysLeavingTwoSurfacesByTurnsFindTheirListsInTheCache() {
+        SplittableRandom r = new SplittableRandom(46);
+        List<Entity> es = columns(r);
+        Vec3 light = v(0.4, 3.9, 0.5);
+        Settings s = settings(camera(v(1.9, 1.7, 4.2), v(0, 0, 0), 60), List.of(point(light, rgb(1, 1, 1), 0, 0)),
+                Background.BLACK, 64, 48);
+        Tracer t = tracer(es, s), probe = tracer(es, s);
+        // Two columns whose tops (the face a ray straight down meets) take different cache entries.
+        int[] shape = new int[2], face = new int[2];
+        double[][] centre = new double[2][];
+        int found = 0;
+        for (int i = -5; i < 5 && found < 2; i += 3) {
+            double x = 0.5 * i + 0.25, z = 0.25 - 0.5 * found;
+            assertThat(probe.closestHit(x, 5, z, 0, -1, 0, Double.POSITIVE_INFINITY)).isTrue();
+            if (found == 1 && Candidates.way(probe.hit.shape, probe.hit.face) == Candidates.way(shape[0], face[0])) continue;
+            shape[found] = probe.hit.shape;
+            face[found] = probe.hit.face;
+            centre[found] = new double[] {x, 5 - probe.hit.t, z};
+            found++;
+        }
+        assertThat(found).isEqualTo(2);
+        long before = 0;
+        for (int k = 0; k < 400; k++) {
+            if (k == 200) before = t.candidates.searches;
+            int c = k % 2;
+            // A point of the top's middle part, just above it.
+            double ox = centre[c][0] + (r.nextDouble() - 0.5) * 0.3, oz = centre[c][2] + (r.nextDouble() - 0.5) * 0.3;
+            double oy = centre[c][1] + 1e-9;
+            t.shading = shape[c];
+            t.shadingFace = face[c];
+            t.shadowTo(ox, oy, oz, light.x(), light.y(), light.z(), 1e-9, 0);
+        }
+        // Past their trials and growths, the last 200 rays (100 from each top) search at most a few times.
+        assertThat(t.candidates.searches - before).isLessThan(10);
+    }
+
     @Test
     void listedRaysAllocateNothingOnceTheirListsAreBuilt() {
         final int PASSES = Candidates.REFLECTED_AFTER + 4;
