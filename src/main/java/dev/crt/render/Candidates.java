@@ -83,8 +83,13 @@ final class Candidates {
      * rays leaving the shape.
      */
     private int[] state;
-    /** Per key and face (six for a box, one for other shapes): 0 or 1 + the first of its records; at most {@link #MAX_RECORDS}. */
+    /**
+     * Per key and face (six for a box, one for other shapes): 0 or 1 + the first of its records; at
+     * most {@link #MAX_RECORDS}; {@link #ALL_WALK} once the face has all the records it may have and
+     * every one walks (found by one search, and no longer searched for every ray).
+     */
     private int[] faceHeads = new int[256];
+    private static final int ALL_WALK = -1;
     private int headCount;
     /**
      * Per record, {@value #RECORD} ints: the walks taken on trial, their cost (see {@link #walked}),
@@ -330,13 +335,18 @@ final class Candidates {
             headCount += n;
             st[key] = 1 + heads;
         }
-        int trial = -1, growing = -1, siblings = 0, last = -1;
-        for (int s = faceHeads[heads + face]; s != 0; s = rc[RECORD * last + 5]) {
+        int head = faceHeads[heads + face];
+        if (head == ALL_WALK) return -1;
+        int trial = -1, growing = -1, siblings = 0, walking = 0, last = -1;
+        for (int s = head; s != 0; s = rc[RECORD * last + 5]) {
             last = s - 1;
             int ri = RECORD * last;
             siblings++;
             int list = rc[ri + 2] - 1;
-            if (list == WALKS) continue;
+            if (list == WALKS) {
+                walking++;
+                continue;
+            }
             if (list < 0) {
                 trial = last;
                 continue;
@@ -380,7 +390,12 @@ final class Candidates {
             rc[ri + 3] = 0;
         }
         // A list of another shape covers its whole box: a second record would be the same.
-        if (siblings >= (shapes.kind[shape] == Shapes.BOX ? MAX_SIBLINGS : 1) || recordCount == MAX_RECORDS) return -1;
+        if (siblings >= (shapes.kind[shape] == Shapes.BOX ? MAX_SIBLINGS : 1)) {
+            // Every record of the face walks, and no other can be made: its rays walk from now on.
+            if (walking == siblings) faceHeads[heads + face] = ALL_WALK;
+            return -1;
+        }
+        if (recordCount == MAX_RECORDS) return -1;
         int added = newRecord(face);
         if (last < 0) faceHeads[heads + face] = 1 + added;
         else records[RECORD * last + 5] = 1 + added;
