@@ -98,14 +98,14 @@ final class QuickParser {
     private ParseClock clock;
     // The tokens as the lexer finds them, one array per field: a token object (a leaf of the tree)
     // is made only when a tree is built, and a written-out object never needs one.
-    private int[] types = new int[1024];
-    private int[] starts = new int[1024];
-    private int[] stops = new int[1024];
-    private int[] lines = new int[1024];
-    private int[] columns = new int[1024];
+    private int[] types;
+    private int[] starts;
+    private int[] stops;
+    private int[] lines;
+    private int[] columns;
     // The text of names, keywords and operators, shared; null for numbers and strings (cut when asked).
-    private String[] texts = new String[1024];
-    private ScriptToken[] tokens = new ScriptToken[1024];
+    private String[] texts;
+    private ScriptToken[] tokens;
     private int count;
     private int p;
     // Names by their characters, so that each distinct name is one String however often it occurs.
@@ -115,6 +115,16 @@ final class QuickParser {
         this.text = text;
         this.clock = clock;
         this.written = written;
+        // Sized for a token every four characters (written-out scenes have one every five or six),
+        // so that a large script's arrays are not copied again and again as they grow.
+        int capacity = Math.max(1024, text.length() / 4);
+        types = new int[capacity];
+        starts = new int[capacity];
+        stops = new int[capacity];
+        lines = new int[capacity];
+        columns = new int[capacity];
+        texts = new String[capacity];
+        tokens = new ScriptToken[capacity];
     }
 
     /**
