@@ -160,7 +160,7 @@ final class QuickParser {
                 kept.add(start < keptTokens ? statement : null);
             }
             parser.clock = null;
-            return new Result(parser, kept, Arrays.copyOf(starts, n), parser.assignedNames());
+            return new Result(parser, kept, Arrays.copyOf(starts, n), parser.assignedNames);
         } catch (GiveUp mistake) {
             return null;
         }
@@ -348,6 +348,15 @@ final class QuickParser {
             texts = Arrays.copyOf(texts, count * 2);
             tokens = Arrays.copyOf(tokens, count * 2);
         }
+        if (type == ASSIGN && count > 0 && types[count - 1] == IDENT) {
+            assignedNames.add(texts[count - 1]);
+        } else if (type == LPAREN && count > 0 && types[count - 1] == MACRO) {
+            inParameters = true;
+        } else if (type == RPAREN) {
+            inParameters = false;
+        } else if (type == IDENT && inParameters) {
+            assignedNames.add(fixed);
+        }
         types[count] = type;
         starts[count] = start;
         stops[count] = stop;
@@ -376,21 +385,12 @@ final class QuickParser {
 
     String script() { return text; }
 
-    /** Names assigned ({@code name =}) or bound as macro parameters ({@code Macro (a, b)}). */
-    private Set<String> assignedNames() {
-        Set<String> assigned = new HashSet<>();
-        for (int i = 0; i + 1 < count; i++) {
-            int type = types[i];
-            if (type == IDENT && types[i + 1] == ASSIGN) {
-                assigned.add(texts[i]);
-            } else if (type == MACRO && types[i + 1] == LPAREN) {
-                for (int j = i + 2; j < count && types[j] != RPAREN; j++) {
-                    if (types[j] == IDENT) assigned.add(texts[j]);
-                }
-            }
-        }
-        return assigned;
-    }
+    // Names assigned ({@code name =}) or bound as macro parameters ({@code Macro (a, b)}), gathered
+    // as the tokens are added (a pass of their own over a large script's tokens ran interpreted,
+    // then made the JIT compile it while the compile waited).
+    private final Set<String> assignedNames = new HashSet<>();
+    // Between a Macro's '(' and the next ')'.
+    private boolean inParameters;
 
     // ---- parser ---------------------------------------------------------------------------------
     //

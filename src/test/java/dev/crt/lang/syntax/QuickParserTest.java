@@ -74,6 +74,10 @@ class QuickParserTest {
             return false;
         }
         assertThat(quick).as("accepted, as by ANTLR: %s", script).isNotNull();
+        // The names it gathers while it lexes are those read off ANTLR's tokens.
+        CommonTokenStream tokens = new CommonTokenStream(new CRTLexer(CharStreams.fromString(script)));
+        tokens.fill();
+        assertThat(quick.assignedNames()).as("assigned names of %s", script).isEqualTo(ScriptParser.assignedNames(tokens.getTokens()));
         List<CRTParser.StatementContext> statements = new ArrayList<>();
         quick.forEachRemaining(statements::add);
         assertThat(statements).hasSameSizeAs(expected);
