@@ -110,6 +110,7 @@ final class QuickParser {
     private int p;
     // Names by their characters, so that each distinct name is one String however often it occurs.
     private String[] names = new String[256];
+    private int[] nameTypes = new int[256];
 
     private QuickParser(String text, ParseClock clock, boolean written) {
         this.text = text;
@@ -264,8 +265,9 @@ final class QuickParser {
             } else if ((c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z')) {
                 i++;
                 while (i < n && isNameCharacter(s[i])) i++;
-                fixed = name(start, i);
-                type = keyword(fixed, c >= 'a');
+                int slot = name(start, i);
+                fixed = names[slot];
+                type = nameTypes[slot];
             } else {
                 return false;
             }
@@ -302,8 +304,11 @@ final class QuickParser {
         };
     }
 
-    /** The one String of the name at [start, end), from an open-addressing table. */
-    private String name(int start, int end) {
+    /**
+     * The slot of the name at [start, end) in an open-addressing table of its one String and its
+     * token type (a keyword's, else IDENT or NAME), worked out once per distinct name.
+     */
+    private int name(int start, int end) {
         int hash = 0;
         char[] s = chars;
         for (int i = start; i < end; i++) hash = 31 * hash + s[i];
@@ -313,10 +318,11 @@ final class QuickParser {
             if (known == null) {
                 String name = text.substring(start, end);
                 names[slot] = name;
-                if (++nameCount * 2 > names.length) growNames();
-                return name;
+                nameTypes[slot] = keyword(name, s[start] >= 'a');
+                if (++nameCount * 2 > names.length) return growNames(name);
+                return slot;
             }
-            if (known.length() == end - start && text.regionMatches(start, known, 0, end - start)) return known;
+            if (known.length() == end - start && text.regionMatches(start, known, 0, end - start)) return slot;
         }
     }
 
@@ -326,16 +332,24 @@ final class QuickParser {
 
     private static int mix(int hash) { return hash ^ (hash >>> 16); }
 
-    private void growNames() {
+    /** Doubles the table of names; the new slot of {@code added}. */
+    private int growNames(String added) {
         String[] old = names;
+        int[] oldTypes = nameTypes;
         names = new String[old.length * 2];
+        nameTypes = new int[old.length * 2];
         int mask = names.length - 1;
-        for (String name : old) {
+        int addedSlot = -1;
+        for (int k = 0; k < old.length; k++) {
+            String name = old[k];
             if (name == null) continue;
             int slot = mix(name.hashCode()) & mask;
             while (names[slot] != null) slot = (slot + 1) & mask;
             names[slot] = name;
+            nameTypes[slot] = oldTypes[k];
+            if (name == added) addedSlot = slot;
         }
+        return addedSlot;
     }
 
     private void add(String fixed, int type, int start, int stop, int line, int column) {

@@ -195,6 +195,19 @@ class QuickParserTest {
         }
     }
 
+    @Test
+    void manyDistinctNamesAndKeywordsAmongThem() {
+        // The lexer's table of names (each with its token type) grows past its first size, with
+        // keywords, names of types and names that merely start like keywords spread through it.
+        StringBuilder s = new StringBuilder();
+        for (int i = 0; i < 300; i++) {
+            s.append("n").append(i).append(" = ").append(i % 7 == 0 ? "true" : "false")
+                    .append(" if (n").append(i).append(") { whilex").append(i).append(" = n").append(i)
+                    .append(" } else { scale").append(i).append(" = Sphere").append(i % 5).append(" { radius -> 1 } }\n");
+        }
+        assertThat(agree(s.toString())).isTrue();
+    }
+
     private static void statement(StringBuilder s, Random r, int depth) {
         switch (r.nextInt(depth > 0 ? 9 : 3)) {
             case 0, 1 -> s.append("v").append(r.nextInt(3)).append(space(r)).append('=').append(space(r));
