@@ -2,7 +2,6 @@ package dev.crt.lang.syntax;
 
 import static dev.crt.lang.parser.CRTParser.*;
 
-import dev.crt.lang.parser.CRTLexer;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.HashSet;
@@ -31,7 +30,11 @@ final class QuickParser {
     }
 
     private static final GiveUp GIVE_UP = new GiveUp();
-    private static final String[] FIXED_TEXT = new String[CRTLexer.VOCABULARY.getMaxTokenType() + 1];
+    // The text of each token type that has one. Written out (SETTINGS, 1, to RBRACKET, 37, in the
+    // grammar's order) rather than read from the generated lexer's vocabulary: that class
+    // deserializes its ATN when first touched (3 to 7 ms of a fresh process), which a script read
+    // without mistakes never needs. QuickParserTest holds it to the vocabulary.
+    private static final String[] FIXED_TEXT = new String[BAD_CHARACTER + 1];
     // Templates the labelled contexts copy from (the generated constructors take one); never changed.
     private static final StatementContext STATEMENT = new StatementContext();
     private static final ExpressionContext EXPRESSION = new ExpressionContext();
@@ -40,11 +43,13 @@ final class QuickParser {
     private static final PrimaryContext PRIMARY = new PrimaryContext();
 
     static {
-        for (int type = 1; type < FIXED_TEXT.length; type++) {
-            String literal = CRTLexer.VOCABULARY.getLiteralName(type);
-            if (literal != null) FIXED_TEXT[type] = literal.substring(1, literal.length() - 1);
-        }
+        String[] texts = ("Settings Scene Macro scale translate rotate true false while if else"
+                + " -> <= >= == != && || < > = + - * / % ^ ! ? : , ( ) { } [ ]").split(" ");
+        System.arraycopy(texts, 0, FIXED_TEXT, SETTINGS, texts.length);
     }
+
+    /** The text every token of {@code type} has, or null (a number, a name, a string…). */
+    static String fixedText(int type) { return type >= 0 && type < FIXED_TEXT.length ? FIXED_TEXT[type] : null; }
 
     // The trees of the top-level statements that start within this many tokens are kept from the
     // reading. A later statement's tree (in a script of hundreds of thousands of statements) is

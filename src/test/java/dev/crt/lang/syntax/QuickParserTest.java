@@ -196,6 +196,16 @@ class QuickParserTest {
     }
 
     @Test
+    void theFixedTextsAreTheGeneratedLexersLiterals() {
+        int max = CRTLexer.VOCABULARY.getMaxTokenType();
+        for (int type = 0; type <= max + 1; type++) {
+            String literal = CRTLexer.VOCABULARY.getLiteralName(type);
+            assertThat(QuickParser.fixedText(type)).as("token type %d", type)
+                    .isEqualTo(literal == null ? null : literal.substring(1, literal.length() - 1));
+        }
+    }
+
+    @Test
     void manyDistinctNamesAndKeywordsAmongThem() {
         // The lexer's table of names (each with its token type) grows past its first size, with
         // keywords, names of types and names that merely start like keywords spread through it.
