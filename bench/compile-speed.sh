@@ -51,7 +51,7 @@ if [ "$busy" = 1 ]; then
   java="${CRT_JAVA:-java}"
   "$java" "$here/tools/BusyCore.java" $((10 + 3 * runs)) >/dev/null 2>&1 &
   busy_pid=$!
-  sleep 1
+  sleep 3 # its compile and warm-up
 fi
 times=()
 for ((i = 1; i <= runs; i++)); do
