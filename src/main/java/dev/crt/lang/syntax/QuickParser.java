@@ -2,6 +2,7 @@ package dev.crt.lang.syntax;
 
 import static dev.crt.lang.parser.CRTParser.*;
 
+import java.nio.charset.StandardCharsets;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.HashSet;
@@ -176,25 +177,32 @@ final class QuickParser {
 
     private boolean lex() {
         // An array, not the String: the lexer runs mostly before the JIT has compiled it, and the
-        // interpreter reads an array element in one bytecode where charAt is several calls.
-        char[] s = text.toCharArray();
+        // interpreter reads an array element in one bytecode where charAt is several calls. Bytes,
+        // not chars: a script of Latin-1 text (nearly every one) is held as such by its String, and
+        // copied out in one step, where a char[] copy widens every character in a loop that runs
+        // interpreted at first. A character beyond Latin-1 is a '?' in these bytes: the lexer then
+        // asks the String. A surrogate pair is one '?', so a text with one has fewer bytes than
+        // characters; such a text is refused here, as the generated lexer's code-point positions
+        // would need (see parse).
+        byte[] s = text.getBytes(StandardCharsets.ISO_8859_1);
         chars = s;
         int n = s.length;
+        if (n != text.length()) return false;
         int i = 0;
         int line = 1;
         int lineStart = 0;
         while (true) {
             char c = 0;
             while (i < n) {
-                c = s[i];
+                c = (char) (s[i] & 0xFF);
                 if (c == '\n') {
                     line++;
                     lineStart = ++i;
-                } else if (c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\uFEFF') {
+                } else if (c == ' ' || c == '\t' || c == '\r' || c == '\f' || (c == '?' && text.charAt(i) == '\uFEFF')) {
                     i++;
                 } else if (c == '-' && i + 1 < n && s[i + 1] == '-') {
-                    for (i += 2; i < n && (c = s[i]) != '\n' && c != '\r'; i++) {
-                        if (Character.isSurrogate(c)) return false;
+                    for (i += 2; i < n && (c = (char) (s[i] & 0xFF)) != '\n' && c != '\r'; i++) {
+                        if (c == '?' && Character.isSurrogate(text.charAt(i))) return false;
                     }
                 } else {
                     break;
@@ -207,7 +215,7 @@ final class QuickParser {
             int start = i;
             int type;
             String fixed = null;
-            char next = i + 1 < n ? s[i + 1] : 0;
+            char next = i + 1 < n ? (char) (s[i + 1] & 0xFF) : 0;
             switch (c) {
                 case '-' -> type = next == '>' ? ARROW : MINUS;
                 case '<' -> type = next == '=' ? LE : LT;
@@ -221,7 +229,7 @@ final class QuickParser {
                 case '/' -> type = SLASH;
                 case '%' -> type = PERCENT;
                 case '^' -> type = CARET;
-                case '?' -> type = QUESTION;
+                case '?' -> type = text.charAt(i) == '?' ? QUESTION : 0;
                 case ':' -> type = COLON;
                 case ',' -> type = COMMA;
                 case '(' -> type = LPAREN;
@@ -239,13 +247,13 @@ final class QuickParser {
             } else if (c == '"') {
                 for (i++;; i++) {
                     if (i >= n) return false;
-                    c = s[i];
+                    c = (char) (s[i] & 0xFF);
                     if (c == '"') break;
-                    if (c == '\r' || c == '\n' || Character.isSurrogate(c)) return false;
+                    if (c == '\r' || c == '\n' || (c == '?' && Character.isSurrogate(text.charAt(i)))) return false;
                     if (c == '\\') {
                         if (i + 1 >= n) return false;
-                        char escaped = s[++i];
-                        if (escaped == '\r' || escaped == '\n' || Character.isSurrogate(escaped)) return false;
+                        char escaped = (char) (s[++i] & 0xFF);
+                        if (escaped == '\r' || escaped == '\n' || (escaped == '?' && Character.isSurrogate(text.charAt(i)))) return false;
                     }
                 }
                 i++;
@@ -281,9 +289,9 @@ final class QuickParser {
         }
     }
 
-    private static boolean isDigit(char c) { return c >= '0' && c <= '9'; }
+    private static boolean isDigit(int c) { return c >= '0' && c <= '9'; }
 
-    private static boolean isNameCharacter(char c) {
+    private static boolean isNameCharacter(int c) {
         return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_';
     }
 
@@ -315,7 +323,7 @@ final class QuickParser {
      */
     private int name(int start, int end) {
         int hash = 0;
-        char[] s = chars;
+        byte[] s = chars;
         for (int i = start; i < end; i++) hash = 31 * hash + s[i];
         int mask = names.length - 1;
         for (int slot = mix(hash) & mask;; slot = (slot + 1) & mask) {
@@ -332,8 +340,8 @@ final class QuickParser {
     }
 
     private int nameCount;
-    // The script's characters while it is lexed.
-    private char[] chars;
+    // The script's characters while it is lexed (Latin-1, see lex).
+    private byte[] chars;
 
     private static int mix(int hash) { return hash ^ (hash >>> 16); }
 

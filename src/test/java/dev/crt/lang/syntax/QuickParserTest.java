@@ -190,8 +190,17 @@ class QuickParserTest {
         for (String script : List.of("x = 1.", "x = 1..2", "x = .5e3", "x = 1.5e+3 + 2E-2", "x = 1.e5", "x = 1e", "x = 1.e",
                 "x = 1.5.3", "x = \"a\\\"b\\\\\"", "x = \"a\\qb\"", "x = \"abc", "x = 1 -- c\ny = 2", "x = 1 --> c", "x = a--b",
                 "x = 1\r\ny = 2\rz = 3", "\uFEFFx = 1", "x = \"\u00e9\"", "-- \u00e9\nx = 1", "x = \"\uD83D\uDE00\"", "x = 1 & 2",
-                "x = scaled + rotate_", "Settingsx = 1", "x = 12abc", "x = 1\f+\t2", "", "   ", "-- only a comment")) {
+                "x = scaled + rotate_", "Settingsx = 1", "x = 12abc", "x = 1\f+\t2", "", "   ", "-- only a comment",
+                // Characters beyond Latin-1, which the lexer reads as '?' and checks in the text.
+                "x = \"\u0142\u20ac?\"", "-- \u0142\u20ac ?\nx = 1", "x = 1 \u0142", "x = 1 \u00e9", "x = a ? 1 : 2",
+                "x = a \u0142 1 : 2", "x = \uFEFF1", "x\uFEFF= 1", "x = \"\\\u0142\"", "x = 1 -- \uD83D\uDE00",
+                "x = \"\uFFFD\u00ff\"")) {
             agree(script);
+        }
+        // A lone surrogate in a comment or a string: the generated lexer takes it, this reader
+        // leaves the script to it (as it did when it read chars).
+        for (String script : List.of("-- \uD800\nx = 1", "x = \"\uDC00\"", "x = \"\\\uD800\"")) {
+            assertThat(QuickParser.parse(script, UNLIMITED)).as(script).isNull();
         }
     }
 
