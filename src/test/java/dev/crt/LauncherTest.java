@@ -55,6 +55,14 @@ class LauncherTest {
             assertThat(made.map(p -> p.getFileName().toString()))
                     .anyMatch(name -> name.startsWith("crt-") && (name.endsWith(".aot") || name.endsWith(".jsa")));
         }
+        // It compiled a written-out scene large enough for the lexer and the number reader to reach
+        // the JIT's top tier in training (docs/benchmarks.md, section 36): 4,000 objects, each with
+        // its own material.
+        // It comes after the scene made by a loop (a large written-out scene before it slowed later
+        // compiles of loops).
+        String training = Files.readString(clone.resolve("target/cds-train/train.crt"));
+        assertThat(training.split("material -> Material \\{", -1)).hasSizeGreaterThan(4000);
+        assertThat(training.indexOf("while (i < n)")).isPositive().isLessThan(training.indexOf("material -> Material {"));
 
         // The start-up cache the first run made is the one later runs can use: the JVM refuses a
         // cache made with other options (it did, silently, for every render on Java 25), and says

@@ -33,21 +33,28 @@ public final class ScriptFiles {
 
     private static Source decode(String name, byte[] bytes, Path file) {
         int skip = startsWithBom(bytes) ? BOM.length : 0;
-        ByteBuffer in = ByteBuffer.wrap(bytes, skip, bytes.length - skip);
-        CharsetDecoder decoder = StandardCharsets.UTF_8.newDecoder()
-                .onMalformedInput(CodingErrorAction.REPORT)
-                .onUnmappableCharacter(CodingErrorAction.REPORT);
-        CharBuffer out = CharBuffer.allocate(bytes.length);
-        CoderResult result = decoder.decode(in, out, true);
-        if (result.isError()) {
-            // The bytes before the bad one decode alike either way: its character offset in the
-            // lossy text is how many characters were decoded before it.
-            String lossy = new String(bytes, skip, bytes.length - skip, StandardCharsets.UTF_8);
-            return new Source(name, lossy, file, "not a text file (invalid UTF-8 at byte " + in.position() + ")",
-                    out.position());
+        int length = bytes.length - skip;
+        // Most scripts are ASCII. String's own decoding checks and copies such bytes in loops the
+        // JVM compiled while it started, where the CharsetDecoder below runs loops of its own that
+        // start interpreted (a tenth of a 2 MB script's compile in a fresh process). As many
+        // chars as bytes and no replacement character: every byte was ASCII.
+        String text = new String(bytes, skip, length, StandardCharsets.UTF_8);
+        if (text.length() != length || text.indexOf('\uFFFD') >= 0) {
+            ByteBuffer in = ByteBuffer.wrap(bytes, skip, length);
+            CharsetDecoder decoder = StandardCharsets.UTF_8.newDecoder()
+                    .onMalformedInput(CodingErrorAction.REPORT)
+                    .onUnmappableCharacter(CodingErrorAction.REPORT);
+            CharBuffer out = CharBuffer.allocate(bytes.length);
+            CoderResult result = decoder.decode(in, out, true);
+            if (result.isError()) {
+                // The bytes before the bad one decode alike either way: its character offset in the
+                // lossy text is how many characters were decoded before it.
+                return new Source(name, text, file, "not a text file (invalid UTF-8 at byte " + in.position() + ")",
+                        out.position());
+            }
+            decoder.flush(out);
+            text = out.flip().toString();
         }
-        decoder.flush(out);
-        String text = out.flip().toString();
         int nul = text.indexOf('\0');
         if (nul >= 0) {
             int byteOffset = skip + text.substring(0, nul).getBytes(StandardCharsets.UTF_8).length;

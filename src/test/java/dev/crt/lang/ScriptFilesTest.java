@@ -8,6 +8,7 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
+import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -52,6 +53,29 @@ class ScriptFilesTest {
         assertThat(r.scene()).isNull();
         assertThat(DiagnosticFormatter.format(r.diagnostics().get(0), s.text()).lines().findFirst().orElseThrow())
                 .isEqualTo(dir.resolve("file.crt") + ":2:7: error: not a text file (invalid UTF-8 at byte 16)");
+    }
+
+    @Test
+    void asciiAndOtherTextDecodeAsUtf8() throws IOException {
+        // ASCII takes a shorter way than other text; both give what a UTF-8 decoder gives.
+        for (String text : List.of("", "Scene { Sphere { } }\n", "x = \"\u00e9\u20ac\"\n", "x = \"\uD83D\uDE00\"",
+                "-- a replacement character written on purpose: \uFFFD\n", "\u00ff\u0080\u07ff")) {
+            Source s = write(text.getBytes(StandardCharsets.UTF_8));
+            assertThat(s.isText()).as(text).isTrue();
+            assertThat(s.text()).isEqualTo(text);
+        }
+    }
+
+    @Test
+    void aLoneBadByteIsReportedThoughItDecodesToOneCharacter() throws IOException {
+        // Each of these bytes alone is not UTF-8 and decodes to one replacement character: as
+        // many characters as bytes, like ASCII, and still not text.
+        for (int bad : new int[] {0x80, 0xBF, 0xC3, 0xFF}) {
+            Source s = write(new byte[] {'x', ' ', '=', ' ', '1', '\n', (byte) bad, '\n'});
+            assertThat(s.isText()).as("byte %x", bad).isFalse();
+            assertThat(s.decodingProblem()).isEqualTo("not a text file (invalid UTF-8 at byte 6)");
+            assertThat(s.problemOffset()).isEqualTo(6);
+        }
     }
 
     @Test

@@ -56,7 +56,17 @@ import java.util.function.BiFunction;
 /** Builds the values of object literals {@code Type { attr -> expr … }} per section 5 of the reference. */
 final class ObjectBuilder {
     /** A type of object literal: its attributes' names and its builder. */
-    record ObjectType(Set<String> attributes, BiFunction<ObjectBuilder, Attributes, Value> build) {}
+    record ObjectType(Set<String> attributes, String[] names, BiFunction<ObjectBuilder, Attributes, Value> build) {
+        /**
+         * The table's own String of attribute {@code name}, or null when the type has none of that
+         * name. An array in the table's order, not the set: this runs for every attribute of every
+         * literal, mostly before the JIT has compiled it, and a set's iterator costs more there.
+         */
+        String canonical(String name) {
+            for (String known : names) if (known.equals(name)) return known;
+            return null;
+        }
+    }
 
     private static final Map<String, ObjectType> TYPES = new LinkedHashMap<>();
     /** The attributes of the Perlin-noise solid textures. */
@@ -89,7 +99,7 @@ final class ObjectBuilder {
     }
 
     private static void type(String name, BiFunction<ObjectBuilder, Attributes, Value> build, String... attributes) {
-        TYPES.put(name, new ObjectType(Set.copyOf(Arrays.asList(attributes)), build));
+        TYPES.put(name, new ObjectType(Set.copyOf(Arrays.asList(attributes)), attributes, build));
     }
 
     /** An area light's n is capped so that n² shadow rays per shading point stay a render, not a hang. */
@@ -150,7 +160,7 @@ final class ObjectBuilder {
         Evaluator.Code[] values = new Evaluator.Code[n];
         for (int i = 0; i < n; i++) {
             CRTParser.AttributeContext attr = written.get(i);
-            String name = canonical(type.attributes(), attr.key.getText());
+            String name = type.canonical(attr.key.getText());
             if (name == null) return null;
             for (int j = 0; j < i; j++) if (names[j] == name) return null;
             names[i] = name;
@@ -160,11 +170,6 @@ final class ObjectBuilder {
         Plan plan = new Plan(typeName, type, evaluator.span(ctx.NAME().getSymbol()), evaluator.span(ctx), names, spans, values);
         ctx.cached = plan;
         return plan;
-    }
-
-    static String canonical(java.util.Set<String> known, String name) {
-        for (String k : known) if (k.equals(name)) return k;
-        return null;
     }
 
     /** Does what {@link #evaluate} and the rest of {@link #build(CRTParser.ObjectContext)} do, from a plan. */

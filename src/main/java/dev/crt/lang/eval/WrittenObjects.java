@@ -12,7 +12,6 @@ import dev.crt.lang.value.VectorValue;
 import dev.crt.scene.Rgb;
 import dev.crt.scene.SourceSpan;
 import java.util.Arrays;
-import java.util.Set;
 
 import static dev.crt.lang.parser.CRTParser.*;
 
@@ -72,11 +71,10 @@ final class WrittenObjects {
         ObjectBuilder.ObjectType type = ObjectBuilder.type(w.text(i));
         if (type == null) return -1;
         types[i] = type;
-        Set<String> known = type.attributes();
         int first = i + 2;
         int j = first;
         while (w.type(j) != RBRACE) {
-            String name = ObjectBuilder.canonical(known, w.text(j));
+            String name = type.canonical(w.text(j));
             if (name == null) return -1;
             // Given twice? The canonical names are the table's own strings, so == compares them.
             for (int k = first; k < j; k = ends[k + 2]) if (names[k] == name) return -1;

@@ -2,7 +2,7 @@ package dev.crt.lang.syntax;
 
 import static dev.crt.lang.parser.CRTParser.*;
 
-import dev.crt.lang.parser.CRTLexer;
+import java.nio.charset.StandardCharsets;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.HashSet;
@@ -31,7 +31,11 @@ final class QuickParser {
     }
 
     private static final GiveUp GIVE_UP = new GiveUp();
-    private static final String[] FIXED_TEXT = new String[CRTLexer.VOCABULARY.getMaxTokenType() + 1];
+    // The text of each token type that has one. Written out (SETTINGS, 1, to RBRACKET, 37, in the
+    // grammar's order) rather than read from the generated lexer's vocabulary: that class
+    // deserializes its ATN when first touched (3 to 7 ms of a fresh process), which a script read
+    // without mistakes never needs. QuickParserTest holds it to the vocabulary.
+    private static final String[] FIXED_TEXT = new String[BAD_CHARACTER + 1];
     // Templates the labelled contexts copy from (the generated constructors take one); never changed.
     private static final StatementContext STATEMENT = new StatementContext();
     private static final ExpressionContext EXPRESSION = new ExpressionContext();
@@ -40,11 +44,13 @@ final class QuickParser {
     private static final PrimaryContext PRIMARY = new PrimaryContext();
 
     static {
-        for (int type = 1; type < FIXED_TEXT.length; type++) {
-            String literal = CRTLexer.VOCABULARY.getLiteralName(type);
-            if (literal != null) FIXED_TEXT[type] = literal.substring(1, literal.length() - 1);
-        }
+        String[] texts = ("Settings Scene Macro scale translate rotate true false while if else"
+                + " -> <= >= == != && || < > = + - * / % ^ ! ? : , ( ) { } [ ]").split(" ");
+        System.arraycopy(texts, 0, FIXED_TEXT, SETTINGS, texts.length);
     }
+
+    /** The text every token of {@code type} has, or null (a number, a name, a string…). */
+    static String fixedText(int type) { return type >= 0 && type < FIXED_TEXT.length ? FIXED_TEXT[type] : null; }
 
     // The trees of the top-level statements that start within this many tokens are kept from the
     // reading. A later statement's tree (in a script of hundreds of thousands of statements) is
@@ -98,23 +104,34 @@ final class QuickParser {
     private ParseClock clock;
     // The tokens as the lexer finds them, one array per field: a token object (a leaf of the tree)
     // is made only when a tree is built, and a written-out object never needs one.
-    private int[] types = new int[1024];
-    private int[] starts = new int[1024];
-    private int[] stops = new int[1024];
-    private int[] lines = new int[1024];
-    private int[] columns = new int[1024];
+    private int[] types;
+    private int[] starts;
+    private int[] stops;
+    private int[] lines;
+    private int[] columns;
     // The text of names, keywords and operators, shared; null for numbers and strings (cut when asked).
-    private String[] texts = new String[1024];
-    private ScriptToken[] tokens = new ScriptToken[1024];
+    private String[] texts;
+    private ScriptToken[] tokens;
     private int count;
     private int p;
     // Names by their characters, so that each distinct name is one String however often it occurs.
     private String[] names = new String[256];
+    private int[] nameTypes = new int[256];
 
     private QuickParser(String text, ParseClock clock, boolean written) {
         this.text = text;
         this.clock = clock;
         this.written = written;
+        // Sized for a token every four characters (written-out scenes have one every five or six),
+        // so that a large script's arrays are not copied again and again as they grow.
+        int capacity = Math.max(1024, text.length() / 4);
+        types = new int[capacity];
+        starts = new int[capacity];
+        stops = new int[capacity];
+        lines = new int[capacity];
+        columns = new int[capacity];
+        texts = new String[capacity];
+        tokens = new ScriptToken[capacity];
     }
 
     /**
@@ -150,7 +167,7 @@ final class QuickParser {
                 kept.add(start < keptTokens ? statement : null);
             }
             parser.clock = null;
-            return new Result(parser, kept, Arrays.copyOf(starts, n), parser.assignedNames());
+            return new Result(parser, kept, Arrays.copyOf(starts, n), parser.assignedNames);
         } catch (GiveUp mistake) {
             return null;
         }
@@ -160,25 +177,32 @@ final class QuickParser {
 
     private boolean lex() {
         // An array, not the String: the lexer runs mostly before the JIT has compiled it, and the
-        // interpreter reads an array element in one bytecode where charAt is several calls.
-        char[] s = text.toCharArray();
+        // interpreter reads an array element in one bytecode where charAt is several calls. Bytes,
+        // not chars: a script of Latin-1 text (nearly every one) is held as such by its String, and
+        // copied out in one step, where a char[] copy widens every character in a loop that runs
+        // interpreted at first. A character beyond Latin-1 is a '?' in these bytes: the lexer then
+        // asks the String. A surrogate pair is one '?', so a text with one has fewer bytes than
+        // characters; such a text is refused here, as the generated lexer's code-point positions
+        // would need (see parse).
+        byte[] s = text.getBytes(StandardCharsets.ISO_8859_1);
         chars = s;
         int n = s.length;
+        if (n != text.length()) return false;
         int i = 0;
         int line = 1;
         int lineStart = 0;
         while (true) {
             char c = 0;
             while (i < n) {
-                c = s[i];
+                c = (char) (s[i] & 0xFF);
                 if (c == '\n') {
                     line++;
                     lineStart = ++i;
-                } else if (c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\uFEFF') {
+                } else if (c == ' ' || c == '\t' || c == '\r' || c == '\f' || (c == '?' && text.charAt(i) == '\uFEFF')) {
                     i++;
                 } else if (c == '-' && i + 1 < n && s[i + 1] == '-') {
-                    for (i += 2; i < n && (c = s[i]) != '\n' && c != '\r'; i++) {
-                        if (Character.isSurrogate(c)) return false;
+                    for (i += 2; i < n && (c = (char) (s[i] & 0xFF)) != '\n' && c != '\r'; i++) {
+                        if (c == '?' && Character.isSurrogate(text.charAt(i))) return false;
                     }
                 } else {
                     break;
@@ -191,7 +215,7 @@ final class QuickParser {
             int start = i;
             int type;
             String fixed = null;
-            char next = i + 1 < n ? s[i + 1] : 0;
+            char next = i + 1 < n ? (char) (s[i + 1] & 0xFF) : 0;
             switch (c) {
                 case '-' -> type = next == '>' ? ARROW : MINUS;
                 case '<' -> type = next == '=' ? LE : LT;
@@ -205,7 +229,7 @@ final class QuickParser {
                 case '/' -> type = SLASH;
                 case '%' -> type = PERCENT;
                 case '^' -> type = CARET;
-                case '?' -> type = QUESTION;
+                case '?' -> type = text.charAt(i) == '?' ? QUESTION : 0;
                 case ':' -> type = COLON;
                 case ',' -> type = COMMA;
                 case '(' -> type = LPAREN;
@@ -223,13 +247,13 @@ final class QuickParser {
             } else if (c == '"') {
                 for (i++;; i++) {
                     if (i >= n) return false;
-                    c = s[i];
+                    c = (char) (s[i] & 0xFF);
                     if (c == '"') break;
-                    if (c == '\r' || c == '\n' || Character.isSurrogate(c)) return false;
+                    if (c == '\r' || c == '\n' || (c == '?' && Character.isSurrogate(text.charAt(i)))) return false;
                     if (c == '\\') {
                         if (i + 1 >= n) return false;
-                        char escaped = s[++i];
-                        if (escaped == '\r' || escaped == '\n' || Character.isSurrogate(escaped)) return false;
+                        char escaped = (char) (s[++i] & 0xFF);
+                        if (escaped == '\r' || escaped == '\n' || (escaped == '?' && Character.isSurrogate(text.charAt(i)))) return false;
                     }
                 }
                 i++;
@@ -254,8 +278,9 @@ final class QuickParser {
             } else if ((c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z')) {
                 i++;
                 while (i < n && isNameCharacter(s[i])) i++;
-                fixed = name(start, i);
-                type = keyword(fixed, c >= 'a');
+                int slot = name(start, i);
+                fixed = names[slot];
+                type = nameTypes[slot];
             } else {
                 return false;
             }
@@ -264,9 +289,9 @@ final class QuickParser {
         }
     }
 
-    private static boolean isDigit(char c) { return c >= '0' && c <= '9'; }
+    private static boolean isDigit(int c) { return c >= '0' && c <= '9'; }
 
-    private static boolean isNameCharacter(char c) {
+    private static boolean isNameCharacter(int c) {
         return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_';
     }
 
@@ -292,10 +317,13 @@ final class QuickParser {
         };
     }
 
-    /** The one String of the name at [start, end), from an open-addressing table. */
-    private String name(int start, int end) {
+    /**
+     * The slot of the name at [start, end) in an open-addressing table of its one String and its
+     * token type (a keyword's, else IDENT or NAME), worked out once per distinct name.
+     */
+    private int name(int start, int end) {
         int hash = 0;
-        char[] s = chars;
+        byte[] s = chars;
         for (int i = start; i < end; i++) hash = 31 * hash + s[i];
         int mask = names.length - 1;
         for (int slot = mix(hash) & mask;; slot = (slot + 1) & mask) {
@@ -303,29 +331,38 @@ final class QuickParser {
             if (known == null) {
                 String name = text.substring(start, end);
                 names[slot] = name;
-                if (++nameCount * 2 > names.length) growNames();
-                return name;
+                nameTypes[slot] = keyword(name, s[start] >= 'a');
+                if (++nameCount * 2 > names.length) return growNames(name);
+                return slot;
             }
-            if (known.length() == end - start && text.regionMatches(start, known, 0, end - start)) return known;
+            if (known.length() == end - start && text.regionMatches(start, known, 0, end - start)) return slot;
         }
     }
 
     private int nameCount;
-    // The script's characters while it is lexed.
-    private char[] chars;
+    // The script's characters while it is lexed (Latin-1, see lex).
+    private byte[] chars;
 
     private static int mix(int hash) { return hash ^ (hash >>> 16); }
 
-    private void growNames() {
+    /** Doubles the table of names; the new slot of {@code added}. */
+    private int growNames(String added) {
         String[] old = names;
+        int[] oldTypes = nameTypes;
         names = new String[old.length * 2];
+        nameTypes = new int[old.length * 2];
         int mask = names.length - 1;
-        for (String name : old) {
+        int addedSlot = -1;
+        for (int k = 0; k < old.length; k++) {
+            String name = old[k];
             if (name == null) continue;
             int slot = mix(name.hashCode()) & mask;
             while (names[slot] != null) slot = (slot + 1) & mask;
             names[slot] = name;
+            nameTypes[slot] = oldTypes[k];
+            if (name == added) addedSlot = slot;
         }
+        return addedSlot;
     }
 
     private void add(String fixed, int type, int start, int stop, int line, int column) {
@@ -337,6 +374,15 @@ final class QuickParser {
             columns = Arrays.copyOf(columns, count * 2);
             texts = Arrays.copyOf(texts, count * 2);
             tokens = Arrays.copyOf(tokens, count * 2);
+        }
+        if (type == ASSIGN && count > 0 && types[count - 1] == IDENT) {
+            assignedNames.add(texts[count - 1]);
+        } else if (type == LPAREN && count > 0 && types[count - 1] == MACRO) {
+            inParameters = true;
+        } else if (type == RPAREN) {
+            inParameters = false;
+        } else if (type == IDENT && inParameters) {
+            assignedNames.add(fixed);
         }
         types[count] = type;
         starts[count] = start;
@@ -366,21 +412,12 @@ final class QuickParser {
 
     String script() { return text; }
 
-    /** Names assigned ({@code name =}) or bound as macro parameters ({@code Macro (a, b)}). */
-    private Set<String> assignedNames() {
-        Set<String> assigned = new HashSet<>();
-        for (int i = 0; i + 1 < count; i++) {
-            int type = types[i];
-            if (type == IDENT && types[i + 1] == ASSIGN) {
-                assigned.add(texts[i]);
-            } else if (type == MACRO && types[i + 1] == LPAREN) {
-                for (int j = i + 2; j < count && types[j] != RPAREN; j++) {
-                    if (types[j] == IDENT) assigned.add(texts[j]);
-                }
-            }
-        }
-        return assigned;
-    }
+    // Names assigned ({@code name =}) or bound as macro parameters ({@code Macro (a, b)}), gathered
+    // as the tokens are added (a pass of their own over a large script's tokens ran interpreted,
+    // then made the JIT compile it while the compile waited).
+    private final Set<String> assignedNames = new HashSet<>();
+    // Between a Macro's '(' and the next ')'.
+    private boolean inParameters;
 
     // ---- parser ---------------------------------------------------------------------------------
     //

@@ -138,7 +138,7 @@ public final class ScriptParser {
     }
 
     /** Names assigned ({@code name =}) or bound as macro parameters ({@code Macro (a, b)}), read off the tokens. */
-    private static Set<String> assignedNames(List<Token> tokens) {
+    static Set<String> assignedNames(List<Token> tokens) {
         Set<String> names = new HashSet<>();
         List<Token> visible = new ArrayList<>();
         for (Token t : tokens) if (t.getChannel() == Token.DEFAULT_CHANNEL) visible.add(t);

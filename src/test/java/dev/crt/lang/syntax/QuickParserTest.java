@@ -74,6 +74,10 @@ class QuickParserTest {
             return false;
         }
         assertThat(quick).as("accepted, as by ANTLR: %s", script).isNotNull();
+        // The names it gathers while it lexes are those read off ANTLR's tokens.
+        CommonTokenStream tokens = new CommonTokenStream(new CRTLexer(CharStreams.fromString(script)));
+        tokens.fill();
+        assertThat(quick.assignedNames()).as("assigned names of %s", script).isEqualTo(ScriptParser.assignedNames(tokens.getTokens()));
         List<CRTParser.StatementContext> statements = new ArrayList<>();
         quick.forEachRemaining(statements::add);
         assertThat(statements).hasSameSizeAs(expected);
@@ -186,9 +190,41 @@ class QuickParserTest {
         for (String script : List.of("x = 1.", "x = 1..2", "x = .5e3", "x = 1.5e+3 + 2E-2", "x = 1.e5", "x = 1e", "x = 1.e",
                 "x = 1.5.3", "x = \"a\\\"b\\\\\"", "x = \"a\\qb\"", "x = \"abc", "x = 1 -- c\ny = 2", "x = 1 --> c", "x = a--b",
                 "x = 1\r\ny = 2\rz = 3", "\uFEFFx = 1", "x = \"\u00e9\"", "-- \u00e9\nx = 1", "x = \"\uD83D\uDE00\"", "x = 1 & 2",
-                "x = scaled + rotate_", "Settingsx = 1", "x = 12abc", "x = 1\f+\t2", "", "   ", "-- only a comment")) {
+                "x = scaled + rotate_", "Settingsx = 1", "x = 12abc", "x = 1\f+\t2", "", "   ", "-- only a comment",
+                // Characters beyond Latin-1, which the lexer reads as '?' and checks in the text.
+                "x = \"\u0142\u20ac?\"", "-- \u0142\u20ac ?\nx = 1", "x = 1 \u0142", "x = 1 \u00e9", "x = a ? 1 : 2",
+                "x = a \u0142 1 : 2", "x = \uFEFF1", "x\uFEFF= 1", "x = \"\\\u0142\"", "x = 1 -- \uD83D\uDE00",
+                "x = \"\uFFFD\u00ff\"")) {
             agree(script);
         }
+        // A lone surrogate in a comment or a string: the generated lexer takes it, this reader
+        // leaves the script to it (as it did when it read chars).
+        for (String script : List.of("-- \uD800\nx = 1", "x = \"\uDC00\"", "x = \"\\\uD800\"")) {
+            assertThat(QuickParser.parse(script, UNLIMITED)).as(script).isNull();
+        }
+    }
+
+    @Test
+    void theFixedTextsAreTheGeneratedLexersLiterals() {
+        int max = CRTLexer.VOCABULARY.getMaxTokenType();
+        for (int type = 0; type <= max + 1; type++) {
+            String literal = CRTLexer.VOCABULARY.getLiteralName(type);
+            assertThat(QuickParser.fixedText(type)).as("token type %d", type)
+                    .isEqualTo(literal == null ? null : literal.substring(1, literal.length() - 1));
+        }
+    }
+
+    @Test
+    void manyDistinctNamesAndKeywordsAmongThem() {
+        // The lexer's table of names (each with its token type) grows past its first size, with
+        // keywords, names of types and names that merely start like keywords spread through it.
+        StringBuilder s = new StringBuilder();
+        for (int i = 0; i < 300; i++) {
+            s.append("n").append(i).append(" = ").append(i % 7 == 0 ? "true" : "false")
+                    .append(" if (n").append(i).append(") { whilex").append(i).append(" = n").append(i)
+                    .append(" } else { scale").append(i).append(" = Sphere").append(i % 5).append(" { radius -> 1 } }\n");
+        }
+        assertThat(agree(s.toString())).isTrue();
     }
 
     private static void statement(StringBuilder s, Random r, int depth) {
