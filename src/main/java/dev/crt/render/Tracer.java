@@ -601,16 +601,24 @@ final class Tracer {
         shadowRays++;
         ray.set(ox, oy, oz, wx, wy, wz);
         int cached = lastOccluder[light];
-        // A list holds every item the segment can meet: an occluder not in it is not tested.
-        if (cached != NONE && (list < 0 || listed(list, cached)) && itemTransmittance(cached, tMax) == 0) return 0;
+        // A list holds every item the segment can meet: an occluder not in it is not tested. When
+        // it does not block, its factor stands in for its test in the loops below (the same
+        // product, and its absorption counted once).
+        double cachedFactor = -1;
+        if (cached != NONE && (list < 0 || listed(list, cached))) {
+            cachedFactor = itemTransmittance(cached, tMax);
+            if (cachedFactor == 0) return 0;
+        } else {
+            cached = NONE;
+        }
         double product = 1;
         for (int item : unbounded) {
-            product *= itemTransmittance(item, tMax);
+            product *= item == cached ? cachedFactor : itemTransmittance(item, tMax);
             if (product == 0) return blockedBy(light, item);
         }
         if (bvh == null) {
             for (int item : items) {
-                product *= itemTransmittance(item, tMax);
+                product *= item == cached ? cachedFactor : itemTransmittance(item, tMax);
                 if (product == 0) return blockedBy(light, item);
             }
             return product;
@@ -618,8 +626,9 @@ final class Tracer {
         if (list >= 0) {
             int[] pool = candidates.pool;
             for (int k = list + 1, end = k + pool[list]; k < end; k++) {
-                product *= itemTransmittance(pool[k], tMax);
-                if (product == 0) return blockedBy(light, pool[k]);
+                int item = pool[k];
+                product *= item == cached ? cachedFactor : itemTransmittance(item, tMax);
+                if (product == 0) return blockedBy(light, item);
             }
             return product;
         }
@@ -628,9 +637,10 @@ final class Tracer {
         if (!walk.start(bvh, ray, 0, tMax)) return product;
         for (int leaf = walk.nextAny(tMax); leaf != BvhWalker.END; leaf = walk.nextAny(tMax)) {
             for (int k = Bvh.leafFirst(leaf), end = k + Bvh.leafCount(leaf); k < end; k++) {
-                tested += candidates.weight(items[k]);
-                product *= itemTransmittance(items[k], tMax);
-                if (product == 0) return blockedBy(light, items[k]);
+                int item = items[k];
+                tested += candidates.weight(item);
+                product *= item == cached ? cachedFactor : itemTransmittance(item, tMax);
+                if (product == 0) return blockedBy(light, item);
             }
         }
         return product;

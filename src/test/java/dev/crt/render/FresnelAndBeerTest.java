@@ -146,4 +146,40 @@ class FresnelAndBeerTest {
             }
         }
     }
+
+    /**
+     * The union of an absorbing slab and an opaque block over half of it: the wall's shadow rays on
+     * the block's side are stopped by the union, which each render thread then tests first for the
+     * next shadow ray; on the other side that ray crosses the slab alone, and its absorption must
+     * be counted once, not once for that first test and again in the ray's own walk.
+     */
+    @Test
+    void aShadowRayTestingItsLastOccluderFirstCountsItsAbsorptionOnce() {
+        double d = 0.5, kt = 0.8;
+        Rgb a = rgb(0.2, 1, 2);
+        Material slab = new Material(Rgb.WHITE, 1, 0, 30, 0, kt, 1.5, Rgb.BLACK, true, false, a);
+        Settings s = settings(camera(v(0, 0, -0.9), Vec3.ZERO, 40), List.of(parallel(v(0, 0, -10), Vec3.ZERO, Rgb.WHITE, 0)),
+                new SolidBackground(Rgb.BLACK), 9, 9);
+        Csg half = csg(CsgOperation.UNION, box(v(-50, -50, -1 - d), v(50, 50, -1), slab),
+                box(v(-50, -50, -1 - d), v(0, 50, -1), matte(Rgb.WHITE)));
+        FrameBuffer fb = Renderer.prepare(scene(s, plane(v(0, 0, -1), Vec3.ZERO, matte(Rgb.WHITE)), half))
+                .render(1, RenderMonitor.NONE);
+        int lit = 0, dark = 0;
+        for (int y = 0; y < 9; y++) {
+            for (int x = 0; x < 9; x++) {
+                if (fb.get(x, y, 0) == 0) {
+                    dark++;
+                    continue;
+                }
+                lit++;
+                for (int c = 0; c < 3; c++) {
+                    double ac = c == 0 ? 0.2 : c == 1 ? 1 : 2;
+                    assertThat((double) fb.get(x, y, c)).as("(%d, %d) channel %d", x, y, c)
+                            .isCloseTo(kt * kt * Math.exp(-ac * d), within(1e-6));
+                }
+            }
+        }
+        assertThat(lit).isGreaterThan(20);
+        assertThat(dark).isGreaterThan(20);
+    }
 }
