@@ -54,10 +54,16 @@ public final class ImageFiles {
         return e.getMessage() == null ? e.getClass().getSimpleName() : e.getMessage();
     }
 
-    /** Whether the file {@code out} names stores each channel clamped to [0, 1] (.png, .ppm; not .pfm, which holds linear light). */
+    /**
+     * Whether the file {@code out} names stores each channel clamped to [0, 1] (.png, .ppm; not .pfm,
+     * which holds linear light); false for a name no writer takes.
+     */
     public static boolean clampsColours(Path out) {
-        String name = out.getFileName() == null ? "" : out.getFileName().toString().toLowerCase(Locale.ROOT);
-        return name.endsWith(".png") || name.endsWith(".ppm");
+        try {
+            return writerFor(out).clamps();
+        } catch (IOException e) {
+            return false;
+        }
     }
 
     private static ImageWriter writerFor(Path out) throws IOException {

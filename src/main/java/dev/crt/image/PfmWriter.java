@@ -13,6 +13,12 @@ final class PfmWriter implements ImageWriter {
     /** Floats per write. */
     private static final int PIECE = 1 << 16;
 
+    /** PFM holds the linear colours as they are. */
+    @Override
+    public boolean clamps() {
+        return false;
+    }
+
     @Override
     public void write(FrameBuffer image, double gamma, Map<String, String> text, OutputStream out) throws IOException {
         int w = image.width(), h = image.height();

@@ -96,7 +96,7 @@ final class Tracer {
      * white in the file whatever else it would add.
      */
     boolean saturating;
-    /** The weights (wr, wg, wb)·(1 − kt) of the local colour being shaded, for {@link PhongShading}'s test of the sum. */
+    /** The weights (wr, wg, wb)·(1 − kt) of the local colour being shaded: what it is added to the sum with, and what {@link PhongShading} tests the sum with. */
     double localR, localG, localB;
     long primaryRays, shadowRays, reflectedRays, refractedRays;
 
@@ -220,9 +220,9 @@ final class Tracer {
                         colour);
             }
             shading = NONE;
-            accR += wr * local * colour[0];
-            accG += wg * local * colour[1];
-            accB += wb * local * colour[2];
+            accR += localR * colour[0];
+            accG += localG * colour[1];
+            accB += localB * colour[2];
         }
         if (depth == 0 || kr == 0 && kt == 0) return;
         if (Features.TEXTURES) travelled = start + hit.t;

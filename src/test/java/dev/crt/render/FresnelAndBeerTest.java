@@ -8,6 +8,7 @@ import dev.crt.geom.Vec3;
 import dev.crt.image.FrameBuffer;
 import dev.crt.scene.Csg;
 import dev.crt.scene.CsgOperation;
+import dev.crt.scene.Entity;
 import dev.crt.scene.Material;
 import dev.crt.scene.Rgb;
 import dev.crt.scene.Scene;
@@ -103,21 +104,33 @@ class FresnelAndBeerTest {
         assertThat(Renderer.prepare(plain).render(1, RenderMonitor.NONE).get(4, 4, 0)).isCloseTo(1f, within(1e-6f));
     }
 
-    @Test
-    void shadowRaysThroughAbsorbingGlassAreTintedByTheDistanceInside() {
-        // The camera sits between a glass slab (behind it) and a white wall; the parallel light
-        // shines through the slab along +z, so each wall point's shadow ray crosses it: Sℓ = kt²·exp(−a·d).
-        double d = 0.5, kt = 0.8;
-        Rgb a = rgb(0.2, 1, 2);
-        Material slab = new Material(Rgb.WHITE, 1, 0, 30, 0, kt, 1.5, Rgb.BLACK, true, false, a);
+    /** The absorbing slabs below: thickness, transparency, and the absorption of each channel. */
+    private static final double D = 0.5, KT = 0.8;
+    private static final double[] ABSORPTION = {0.2, 1, 2};
+    private static final Material SLAB = new Material(Rgb.WHITE, 1, 0, 30, 0, KT, 1.5, Rgb.BLACK, true, false,
+            rgb(ABSORPTION[0], ABSORPTION[1], ABSORPTION[2]));
+
+    /**
+     * The camera sits between {@code solid} (behind it) and a white wall; the parallel light shines
+     * through the solid along +z, so each wall point's shadow ray crosses it. 9 × 9 pixels.
+     */
+    private static FrameBuffer wallLitThrough(Entity solid) {
         Settings s = settings(camera(v(0, 0, -0.9), Vec3.ZERO, 40), List.of(parallel(v(0, 0, -10), Vec3.ZERO, Rgb.WHITE, 0)),
                 new SolidBackground(Rgb.BLACK), 9, 9);
-        Scene scene = scene(s, plane(v(0, 0, -1), Vec3.ZERO, matte(Rgb.WHITE)), box(v(-50, -50, -1 - d), v(50, 50, -1), slab));
-        FrameBuffer fb = Renderer.prepare(scene).render(1, RenderMonitor.NONE);
+        return Renderer.prepare(scene(s, plane(v(0, 0, -1), Vec3.ZERO, matte(Rgb.WHITE)), solid)).render(1, RenderMonitor.NONE);
+    }
+
+    /** Channel c of the wall behind {@code thickness} of the slabs' glass, crossed at two faces: kt²·exp(−a·thickness). */
+    private static double throughSlab(int c, double thickness) {
+        return KT * KT * Math.exp(-ABSORPTION[c] * thickness);
+    }
+
+    @Test
+    void shadowRaysThroughAbsorbingGlassAreTintedByTheDistanceInside() {
+        FrameBuffer fb = wallLitThrough(box(v(-50, -50, -1 - D), v(50, 50, -1), SLAB));
         for (int c = 0; c < 3; c++) {
-            double ac = c == 0 ? 0.2 : c == 1 ? 1 : 2;
-            assertThat((double) fb.get(4, 4, c)).isCloseTo(kt * kt * Math.exp(-ac * d), within(1e-6));
-            assertThat((double) fb.get(0, 0, c)).isCloseTo(kt * kt * Math.exp(-ac * d), within(1e-6));
+            assertThat((double) fb.get(4, 4, c)).isCloseTo(throughSlab(c, D), within(1e-6));
+            assertThat((double) fb.get(0, 0, c)).isCloseTo(throughSlab(c, D), within(1e-6));
         }
     }
 
@@ -125,24 +138,17 @@ class FresnelAndBeerTest {
     void shadowRaysThroughAbsorbingCsgSolidsAreTintedByTheDistanceInsideTheResult() {
         // As above, with the slab made by CSG: a thick slab minus its back part (d left), and the
         // union of two overlapping slabs (1.5·d in all, crossed at its two outer faces only).
-        double d = 0.5, kt = 0.8;
-        Rgb a = rgb(0.2, 1, 2);
-        Material slab = new Material(Rgb.WHITE, 1, 0, 30, 0, kt, 1.5, Rgb.BLACK, true, false, a);
-        Settings s = settings(camera(v(0, 0, -0.9), Vec3.ZERO, 40), List.of(parallel(v(0, 0, -10), Vec3.ZERO, Rgb.WHITE, 0)),
-                new SolidBackground(Rgb.BLACK), 9, 9);
-        Csg cut = csg(CsgOperation.DIFFERENCE, box(v(-50, -50, -1 - 2 * d), v(50, 50, -1), slab),
-                box(v(-60, -60, -5), v(60, 60, -1 - d), slab));
-        Csg joined = csg(CsgOperation.UNION, box(v(-50, -50, -1 - d), v(50, 50, -1), slab),
-                box(v(-50, -50, -1 - 1.5 * d), v(50, 50, -1 - 0.5 * d), slab));
-        double[] thickness = {d, 1.5 * d};
+        Csg cut = csg(CsgOperation.DIFFERENCE, box(v(-50, -50, -1 - 2 * D), v(50, 50, -1), SLAB),
+                box(v(-60, -60, -5), v(60, 60, -1 - D), SLAB));
+        Csg joined = csg(CsgOperation.UNION, box(v(-50, -50, -1 - D), v(50, 50, -1), SLAB),
+                box(v(-50, -50, -1 - 1.5 * D), v(50, 50, -1 - 0.5 * D), SLAB));
+        double[] thickness = {D, 1.5 * D};
         Csg[] solids = {cut, joined};
         for (int k = 0; k < 2; k++) {
-            Scene scene = scene(s, plane(v(0, 0, -1), Vec3.ZERO, matte(Rgb.WHITE)), solids[k]);
-            FrameBuffer fb = Renderer.prepare(scene).render(1, RenderMonitor.NONE);
+            FrameBuffer fb = wallLitThrough(solids[k]);
             for (int c = 0; c < 3; c++) {
-                double ac = c == 0 ? 0.2 : c == 1 ? 1 : 2;
                 assertThat((double) fb.get(4, 4, c)).as("solid %d channel %d", k, c)
-                        .isCloseTo(kt * kt * Math.exp(-ac * thickness[k]), within(1e-6));
+                        .isCloseTo(throughSlab(c, thickness[k]), within(1e-6));
             }
         }
     }
@@ -155,15 +161,9 @@ class FresnelAndBeerTest {
      */
     @Test
     void aShadowRayTestingItsLastOccluderFirstCountsItsAbsorptionOnce() {
-        double d = 0.5, kt = 0.8;
-        Rgb a = rgb(0.2, 1, 2);
-        Material slab = new Material(Rgb.WHITE, 1, 0, 30, 0, kt, 1.5, Rgb.BLACK, true, false, a);
-        Settings s = settings(camera(v(0, 0, -0.9), Vec3.ZERO, 40), List.of(parallel(v(0, 0, -10), Vec3.ZERO, Rgb.WHITE, 0)),
-                new SolidBackground(Rgb.BLACK), 9, 9);
-        Csg half = csg(CsgOperation.UNION, box(v(-50, -50, -1 - d), v(50, 50, -1), slab),
-                box(v(-50, -50, -1 - d), v(0, 50, -1), matte(Rgb.WHITE)));
-        FrameBuffer fb = Renderer.prepare(scene(s, plane(v(0, 0, -1), Vec3.ZERO, matte(Rgb.WHITE)), half))
-                .render(1, RenderMonitor.NONE);
+        Csg half = csg(CsgOperation.UNION, box(v(-50, -50, -1 - D), v(50, 50, -1), SLAB),
+                box(v(-50, -50, -1 - D), v(0, 50, -1), matte(Rgb.WHITE)));
+        FrameBuffer fb = wallLitThrough(half);
         int lit = 0, dark = 0;
         for (int y = 0; y < 9; y++) {
             for (int x = 0; x < 9; x++) {
@@ -173,9 +173,7 @@ class FresnelAndBeerTest {
                 }
                 lit++;
                 for (int c = 0; c < 3; c++) {
-                    double ac = c == 0 ? 0.2 : c == 1 ? 1 : 2;
-                    assertThat((double) fb.get(x, y, c)).as("(%d, %d) channel %d", x, y, c)
-                            .isCloseTo(kt * kt * Math.exp(-ac * d), within(1e-6));
+                    assertThat((double) fb.get(x, y, c)).as("(%d, %d) channel %d", x, y, c).isCloseTo(throughSlab(c, D), within(1e-6));
                 }
             }
         }
