@@ -155,12 +155,33 @@ final class CsgSolids {
                 b = node((Csg) e, placed, tree, self, op == DIFFERENCE && first, shapes, materials);
             }
             if (op == DIFFERENCE) {
-                if (first) bounds = b;
+                if (first) {
+                    bounds = b;
+                } else if (e instanceof Primitive && shapes.kind[leafShape[leafSize - 1]] == Shapes.BOX && bounds != null) {
+                    // An axis-aligned box taken away is its own bounds: it trims the first operand's,
+                    // which a bowl cut from a ball (sphere − box) shrinks to the bowl.
+                    bounds = bounds.less(b, CUT_MARGIN * (1 + maxAbs(bounds) + maxAbs(b)));
+                }
             } else {
                 bounds = bounds == null ? b : op == UNION ? bounds.union(b) : bounds.intersection(b);
             }
         }
         return bounds;
+    }
+
+    /**
+     * How far a side of a difference's bounds trimmed by a box taken away ({@link Aabb#less}) is
+     * moved back out, relative to the coordinates: far above the rounding of hit points on the
+     * box's face, so every hit the solid's walk reports lies inside its bounds.
+     */
+    static final double CUT_MARGIN = 1e-9;
+
+    private static double maxAbs(Aabb b) {
+        double m = 0;
+        for (double v : new double[] {b.min().x(), b.min().y(), b.min().z(), b.max().x(), b.max().y(), b.max().z()}) {
+            if (Double.isFinite(v)) m = Math.max(m, Math.abs(v));
+        }
+        return m;
     }
 
     /** An operand waiting to be added: the entity, what places it, and whether it is a difference's first operand. */
