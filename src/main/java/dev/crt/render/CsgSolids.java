@@ -56,6 +56,8 @@ final class CsgSolids {
     private int[] bvhStart = new int[4];
     private Bvh[] bvh = new Bvh[4];
     private double[] scale = new double[4];
+    /** Per tree, its bounds (min x, y, z, max x, y, z) when finite, for {@link #mayMeet}; else NaN. */
+    private double[] treeBounds = new double[6 * 4];
     /**
      * Per tree: whether it is one operation on two primitives, always tested (no BVH), with a
      * difference's first operand first; such trees are walked by {@link #walkPair}.
@@ -102,6 +104,7 @@ final class CsgSolids {
             bvhStart = Arrays.copyOf(bvhStart, n);
             bvh = Arrays.copyOf(bvh, n);
             scale = Arrays.copyOf(scale, n);
+            treeBounds = Arrays.copyOf(treeBounds, 6 * n);
             pair = Arrays.copyOf(pair, n);
         }
         leafStart[tree] = leafSize;
@@ -115,6 +118,14 @@ final class CsgSolids {
         for (int k = leafStart[tree]; k < leafSize; k++) sc = Math.max(sc, shapes.scale[leafShape[k]]);
         scale[tree] = sc;
         bounds[0] = b;
+        boolean finite = !b.isEmpty() && b.isFinite();
+        double[] tb = treeBounds;
+        tb[6 * tree] = finite ? b.min().x() : Double.NaN;
+        tb[6 * tree + 1] = finite ? b.min().y() : Double.NaN;
+        tb[6 * tree + 2] = finite ? b.min().z() : Double.NaN;
+        tb[6 * tree + 3] = finite ? b.max().x() : Double.NaN;
+        tb[6 * tree + 4] = finite ? b.max().y() : Double.NaN;
+        tb[6 * tree + 5] = finite ? b.max().z() : Double.NaN;
         return tree;
     }
 
@@ -462,6 +473,16 @@ final class CsgSolids {
     /** Whether the point the walk is at is inside the whole tree. */
     private boolean rootState(int tree, Scratch sc) {
         return sc.stamp[0] == sc.walk && state(nodeStart[tree], 0, sc);
+    }
+
+    /**
+     * False only when the segment 0 < t < {@code tMax} of the ray misses the bounds of {@code tree}
+     * (by the widened slab test of a BVH walk): its solid then has no boundary there, so no hit and
+     * a transmittance of 1. True for a tree with empty or unbounded bounds.
+     */
+    boolean mayMeet(int tree, Ray ray, double tMax) {
+        double[] tb = treeBounds;
+        return tb[6 * tree] != tb[6 * tree] || ray.enters(tb, 6 * tree, 0, tMax);
     }
 
     /**

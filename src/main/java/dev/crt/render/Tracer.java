@@ -509,7 +509,7 @@ final class Tracer {
         int[] list = c.blockItems;
         double[] near = c.blockNear;
         for (int k = 0, n = c.blockCount; k < n && near[k] < tMax; k++) {
-            if (hitItem(list[k], tMax)) {
+            if (mayMeet(list[k], tMax) && hitItem(list[k], tMax)) {
                 found = true;
                 tMax = hit.t;
             }
@@ -539,7 +539,7 @@ final class Tracer {
         int[] items = c.pool;
         double[] near = c.near;
         for (int k = list + 1, end = k + items[list]; k < end && near[k] < tMax; k++) {
-            if (hitItem(items[k], tMax)) {
+            if (mayMeet(items[k], tMax) && hitItem(items[k], tMax)) {
                 found = true;
                 tMax = hit.t;
             }
@@ -585,6 +585,17 @@ final class Tracer {
         return bvh != null && unbounded.length == 0;
     }
 
+    /**
+     * False only when the segment 0 < t < tMax of {@link #ray} misses the box of {@code item} (a
+     * box is its own; a CSG tree's bounds), by the widened slab test of a BVH walk: the item then
+     * has no hit and the factor 1 there. A list tests each item's box first, as the walk tests a
+     * leaf's: most of a list's items are missed, and this is a fraction of their own tests.
+     */
+    private boolean mayMeet(int item, double tMax) {
+        if (item < 0) return csg.mayMeet(-item - 1, ray, tMax);
+        return shapes.kind[item] != Shapes.BOX || ray.enters(shapes.data, shapes.offset[item], 0, tMax);
+    }
+
     private boolean hitItem(int item, double tMax) {
         if (item < 0) return csg.closestHit(-item - 1, ray, tMax, shapes, geometry.materials, span, csgScratch, hit);
         return shapes.firstHit(item, ray, tMax, span, hit);
@@ -627,6 +638,8 @@ final class Tracer {
             int[] pool = candidates.pool;
             for (int k = list + 1, end = k + pool[list]; k < end; k++) {
                 int item = pool[k];
+                // An item whose box the segment misses has the factor 1 (× 1 keeps the product's bits).
+                if (item != cached && !mayMeet(item, tMax)) continue;
                 product *= item == cached ? cachedFactor : itemTransmittance(item, tMax);
                 if (product == 0) return blockedBy(light, item);
             }
