@@ -30,7 +30,9 @@ public final class GifAssembly {
     }
 
     private static RgbImage rgb(Picture picture) {
-        float[] v = picture.rgb();
+        // A frame of 8-bit codes is already what the GIF writer reads (byte8 of k/255f is k).
+        if (picture.codes() != null) return new RgbImage(picture.width(), picture.height(), picture.codes());
+        float[] v = picture.floats();
         int[] packed = new int[picture.width() * picture.height()];
         for (int i = 0; i < packed.length; i++) {
             packed[i] = (byte8(v[3 * i]) << 16) | (byte8(v[3 * i + 1]) << 8) | byte8(v[3 * i + 2]);

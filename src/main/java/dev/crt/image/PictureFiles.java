@@ -17,7 +17,7 @@ import javax.imageio.ImageIO;
 
 /** Reading pictures that scenes use (panoramas, later textures). */
 public final class PictureFiles {
-    // 64 megapixels (a 16384 x 4096 panorama) already take 768 MB as floats.
+    // 64 megapixels (a 16384 x 4096 panorama) already take 256 MB as codes, 768 MB as floats.
     private static final long MAX_PIXELS = 1L << 26;
 
     /**
@@ -32,7 +32,8 @@ public final class PictureFiles {
     private PictureFiles() {}
 
     /**
-     * Decodes an image file (PNG, JPEG, GIF, BMP, PPM…) into a Picture of stored values in [0, 1].
+     * Decodes an image file (PNG, JPEG, GIF, BMP, PPM…) into a Picture of stored values in [0, 1]:
+     * its 8-bit codes, but for a PPM whose samples are not 8-bit values (maxval 1000, 100…).
      * A file with the same bytes as the last one ImageIO decoded gives the same Picture again
      * (its texels are shared: never written into).
      * @throws IOException with a plain sentence when the file cannot be read or decoded
@@ -81,32 +82,23 @@ public final class PictureFiles {
         last = new SoftReference<>(d);
     }
 
+    /** The image's 8-bit codes: what getRGB gives, without its alpha. */
     private static Picture fromImage(BufferedImage image, Path file) throws IOException {
         int w = image.getWidth(), h = image.getHeight();
         checkSize(w, h, file);
-        float[] rgb = new float[w * h * 3];
+        int[] codes = new int[w * h];
         byte[] bgr = plainBgr(image);
         if (bgr != null) {
             // What getRGB would give, read straight from the bytes: 0.05 s instead of 0.6-0.8 s
             // for a 6000 x 3000 JPEG, where getRGB goes through the colour model texel by texel.
-            for (int i = 0; i < rgb.length; i += 3) {
-                rgb[i] = (bgr[i + 2] & 0xFF) / 255f;
-                rgb[i + 1] = (bgr[i + 1] & 0xFF) / 255f;
-                rgb[i + 2] = (bgr[i] & 0xFF) / 255f;
+            for (int i = 0, j = 0; i < codes.length; i++, j += 3) {
+                codes[i] = (bgr[j + 2] & 0xFF) << 16 | (bgr[j + 1] & 0xFF) << 8 | bgr[j] & 0xFF;
             }
-            return new Picture(w, h, rgb);
+            return Picture.ofCodes(w, h, codes);
         }
-        int[] row = new int[w];
-        for (int y = 0; y < h; y++) {
-            image.getRGB(0, y, w, 1, row, 0, w);
-            for (int x = 0; x < w; x++) {
-                int p = row[x], i = (y * w + x) * 3;
-                rgb[i] = ((p >> 16) & 0xFF) / 255f;
-                rgb[i + 1] = ((p >> 8) & 0xFF) / 255f;
-                rgb[i + 2] = (p & 0xFF) / 255f;
-            }
-        }
-        return new Picture(w, h, rgb);
+        for (int y = 0; y < h; y++) image.getRGB(0, y, w, 1, codes, y * w, w);
+        for (int i = 0; i < codes.length; i++) codes[i] &= 0xFFFFFF;
+        return Picture.ofCodes(w, h, codes);
     }
 
     /**
@@ -136,6 +128,16 @@ public final class PictureFiles {
         int bytesPerSample = max < 256 ? 1 : 2;
         long needed = (long) w * h * 3 * bytesPerSample;
         if (start > bytes.length || bytes.length - start < needed) throw new IOException(file + " is a truncated PPM file");
+        if (bytesPerSample == 1 && 255 % max == 0) {
+            // Samples of 8 bits or fewer whose values v/max are 8-bit codes (maxval 255, 15, 1…):
+            // v/max and (v·255/max)/255 round to the same float.
+            int[] codes = new int[w * h];
+            int step = 255 / max;
+            for (int i = 0, j = start; i < codes.length; i++, j += 3) {
+                codes[i] = code(bytes[j], step) << 16 | code(bytes[j + 1], step) << 8 | code(bytes[j + 2], step);
+            }
+            return Picture.ofCodes(w, h, codes);
+        }
         float[] rgb = new float[w * h * 3];
         for (int i = 0; i < rgb.length; i++) {
             int v = bytesPerSample == 1 ? bytes[start + i] & 0xFF
@@ -143,6 +145,11 @@ public final class PictureFiles {
             rgb[i] = Math.min(1f, v / (float) max);
         }
         return new Picture(w, h, rgb);
+    }
+
+    /** The 8-bit code of a PPM sample of {@code 255 / step} levels; a value past the maximum reads as 1. */
+    private static int code(byte sample, int step) {
+        return Math.min(255, (sample & 0xFF) * step);
     }
 
     private static int headerNumber(byte[] bytes, int[] pos, Path file) throws IOException {

@@ -346,8 +346,15 @@ public final class LiveRenderer implements AutoCloseable {
     }
 
     private void uploadPanorama(Picture pic, double gamma) {
-        FloatBuffer texels = BufferUtils.createFloatBuffer(pic.rgb().length);
-        for (float v : pic.rgb()) texels.put(gamma != 1 ? (float) srgbToLinear(v) : v);
+        FloatBuffer texels = BufferUtils.createFloatBuffer(pic.width() * pic.height() * 3);
+        int[] codes = pic.codes();
+        if (codes != null) {
+            float[] value = new float[256];
+            for (int k = 0; k < 256; k++) value[k] = gamma != 1 ? (float) srgbToLinear(k / 255f) : k / 255f;
+            for (int p : codes) texels.put(value[p >> 16 & 0xFF]).put(value[p >> 8 & 0xFF]).put(value[p & 0xFF]);
+        } else {
+            for (float v : pic.floats()) texels.put(gamma != 1 ? (float) srgbToLinear(v) : v);
+        }
         texels.flip();
         glBindTexture(GL_TEXTURE_2D, panoramaTexture);
         glPixelStorei(GL_UNPACK_ALIGNMENT, 1);

@@ -6,8 +6,6 @@ import dev.crt.scene.GradientBackground;
 import dev.crt.scene.PanoramaBackground;
 import dev.crt.scene.Picture;
 import dev.crt.scene.SolidBackground;
-import java.lang.ref.SoftReference;
-import java.lang.ref.WeakReference;
 
 /**
  * The colour of rays that hit nothing: a solid colour, a horizon-to-sky gradient by elevation, or an
@@ -23,9 +21,9 @@ final class BackgroundShader {
 
     private final int kind;
     private final double r0, g0, b0, r1, g1, b1;
-    /** The texels as floats, r, g, b per texel, when they are not all 8-bit values; else null. */
+    /** The texels as floats, r, g, b per texel, when the picture holds floats; else null. */
     private final float[] texels;
-    /** The texels as 0xRRGGBB of 8-bit codes, when they all are; else null. */
+    /** The texels as 0xRRGGBB of 8-bit codes, the picture's own, when it holds codes; else null. */
     private final int[] packed;
     /**
      * The value of each 8-bit code, linear or as stored (see the constructor): floats, held as
@@ -75,9 +73,9 @@ final class BackgroundShader {
             h = pic.height();
             boolean linearise = gamma != 1 && !original;
             for (int k = 0; k < 256; k++) level[k] = linearise ? (float) srgbToLinear(k / 255f) : k / 255f;
-            codes = packOnce(pic.rgb());
+            codes = pic.codes();
             if (codes == null) {
-                tex = pic.rgb().clone();
+                tex = pic.floats().clone();
                 if (linearise) {
                     for (int i = 0; i < tex.length; i++) tex[i] = (float) srgbToLinear(tex[i]);
                 }
@@ -102,58 +100,9 @@ final class BackgroundShader {
         vOffset = 0.5 * h - 0.5;
     }
 
-    /** k/255f for each 8-bit code k: what a decoder's texel of code k holds. */
-    private static final float[] CODE_VALUE = new float[256];
-
-    static {
-        for (int k = 0; k < 256; k++) CODE_VALUE[k] = k / 255f;
-    }
-
-    /**
-     * The texels last packed, kept softly, and the float texels they came from, weakly (the scene
-     * holds those): a render after the first of the same scene (the studio's, a live view's, an
-     * animation's next frame, whose compile gets the same picture again from
-     * {@link dev.crt.image.PictureFiles}) shares them instead of packing 18 M texels again.
-     */
-    private static WeakReference<float[]> packedFrom = new WeakReference<>(null);
-    private static SoftReference<int[]> packedTexels = new SoftReference<>(null);
-
-    /** {@link #pack}, or the last result when {@code rgb} is the very array packed last. */
-    private static synchronized int[] packOnce(float[] rgb) {
-        int[] p = packedFrom.get() == rgb ? packedTexels.get() : null;
-        if (p == null) {
-            p = pack(rgb);
-            if (p != null) {
-                packedFrom = new WeakReference<>(rgb);
-                packedTexels = new SoftReference<>(p);
-            }
-        }
-        return p;
-    }
-
     /** Whether this shader reads the same packed texels as {@code other} (not copies of them). */
     boolean sharesTexels(BackgroundShader other) {
         return packed != null && packed == other.packed;
-    }
-
-    /** The texels as 0xRRGGBB when every value is an 8-bit code k/255 (as decoders give), else null. */
-    private static int[] pack(float[] rgb) {
-        int[] out = new int[rgb.length / 3];
-        for (int i = 0, j = 0; i < out.length; i++, j += 3) {
-            int r = code(rgb[j]), g = code(rgb[j + 1]), b = code(rgb[j + 2]);
-            if ((r | g | b) < 0) return null;
-            out[i] = r << 16 | g << 8 | b;
-        }
-        return out;
-    }
-
-    /**
-     * k when v is exactly k/255f for a k in 0 … 255, else −1: the code nearest v, checked against
-     * the table (a panorama's load checks 54 M values; a division each was most of it).
-     */
-    static int code(float v) {
-        int k = (int) (v * 255 + 0.5f);
-        return k >= 0 && k <= 255 && CODE_VALUE[k] == v ? k : -1;
     }
 
     /** The sRGB transfer function inverted: stored value in [0, 1] to linear light. */

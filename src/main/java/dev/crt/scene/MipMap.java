@@ -18,9 +18,24 @@ public final class MipMap {
         texels = new float[levels][];
         widths = new int[levels];
         heights = new int[levels];
-        float[] base = picture.rgb().clone();
-        if (gamma != 1) {
-            for (int i = 0; i < base.length; i++) base[i] = (float) srgbToLinear(base[i]);
+        float[] base;
+        int[] codes = picture.codes();
+        if (codes != null) {
+            // Each code's value once, as the loop below would convert it.
+            float[] value = new float[256];
+            for (int k = 0; k < 256; k++) value[k] = gamma != 1 ? (float) srgbToLinear(k / 255f) : k / 255f;
+            base = new float[codes.length * 3];
+            for (int i = 0; i < codes.length; i++) {
+                int p = codes[i];
+                base[3 * i] = value[p >> 16 & 0xFF];
+                base[3 * i + 1] = value[p >> 8 & 0xFF];
+                base[3 * i + 2] = value[p & 0xFF];
+            }
+        } else {
+            base = picture.floats().clone();
+            if (gamma != 1) {
+                for (int i = 0; i < base.length; i++) base[i] = (float) srgbToLinear(base[i]);
+            }
         }
         texels[0] = base;
         widths[0] = w;

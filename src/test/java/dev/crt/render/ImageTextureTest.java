@@ -85,6 +85,26 @@ class ImageTextureTest {
         return Renderer.prepare(scene(s, plane(v(0, 0, -1), v(0, 0, 10), textured(t)))).render(2, RenderMonitor.NONE);
     }
 
+    /** A picture of 8-bit codes (as files load) makes the very mip chain of the floats it stands for, with and without gamma. */
+    @Test
+    void codesMakeTheMipChainOfTheirFloats() {
+        SplittableRandom r = new SplittableRandom(23);
+        int[] codes = new int[13 * 9];
+        for (int i = 0; i < codes.length; i++) codes[i] = r.nextInt(1 << 24);
+        Picture coded = Picture.ofCodes(13, 9, codes), floats = new Picture(13, 9, coded.floats());
+        for (double gamma : new double[] {1, 2.2}) {
+            MipMap a = new MipMap(coded, gamma), b = new MipMap(floats, gamma);
+            assertThat(a.levels()).isEqualTo(b.levels());
+            double[] got = new double[3], want = new double[3];
+            for (int i = 0; i < 5_000; i++) {
+                double s = r.nextDouble(-2, 2), t = r.nextDouble(-2, 2), lod = r.nextDouble(-1, a.levels());
+                a.sample(s, t, lod, got);
+                b.sample(s, t, lod, want);
+                assertThat(got).containsExactly(want);
+            }
+        }
+    }
+
     @Test
     void oneTexelPerPixelOnAFacingPlaneIsLevelZeroAndTwoIsLevelOne() {
         Picture p = random(32, 32, 2);

@@ -1,6 +1,7 @@
 package dev.crt.render;
 
 import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.assertThatThrownBy;
 import static org.assertj.core.api.Assertions.within;
 
 import dev.crt.geom.Atan;
@@ -10,8 +11,9 @@ import java.util.SplittableRandom;
 import org.junit.jupiter.api.Test;
 
 /**
- * The panorama's compact store (an int per 8-bit texel) and its own atan2 give the colours
- * of the plain formula: bilinear over float texels, angles from the library.
+ * The panorama's compact store (a picture's 8-bit codes, an int per texel, read as they are) and
+ * its own atan2 give the colours of the plain formula: bilinear over float texels, angles from
+ * the library.
  */
 class PanoramaStoreTest {
     @Test
@@ -40,13 +42,9 @@ class PanoramaStoreTest {
     void eightBitAndFloatTexelsShadeAsThePlainFormula() {
         SplittableRandom r = new SplittableRandom(11);
         int w = 37, h = 19;
-        float[] codes = new float[w * h * 3], any = new float[w * h * 3];
-        for (int i = 0; i < codes.length; i++) {
-            codes[i] = r.nextInt(256) / 255f;
-            any[i] = r.nextFloat();
-        }
-        for (float[] rgb : new float[][] {codes, any}) {
-            Picture pic = new Picture(w, h, rgb);
+        float[] any = new float[w * h * 3];
+        for (int i = 0; i < any.length; i++) any[i] = r.nextFloat();
+        for (Picture pic : new Picture[] {randomCodes(r, w, h), new Picture(w, h, any)}) {
             for (double gamma : new double[] {1, 2.2}) {
                 BackgroundShader shader = new BackgroundShader(new PanoramaBackground("p", pic, 0.7), gamma);
                 double[] got = new double[3], want = new double[3];
@@ -60,33 +58,66 @@ class PanoramaStoreTest {
         }
     }
 
+    /**
+     * A picture of codes (as files of 8-bit samples load) and a picture of the very floats they
+     * stand for shade to the same bits, in both mappings and with or without gamma: the codes are
+     * read as they are, the floats through the float path.
+     */
     @Test
-    void onlyExactEightBitValuesGetACode() {
-        for (int k = 0; k < 256; k++) {
-            float v = k / 255f;
-            assertThat(BackgroundShader.code(v)).isEqualTo(k);
-            assertThat(BackgroundShader.code(Math.nextUp(v))).isEqualTo(-1);
-            if (k > 0) assertThat(BackgroundShader.code(Math.nextDown(v))).isEqualTo(-1);
-        }
-        assertThat(BackgroundShader.code(-0f)).isEqualTo(0);
-        for (float v : new float[] {-1f / 255, -0.4f, Float.NaN, 256f / 255, Float.POSITIVE_INFINITY, Float.NEGATIVE_INFINITY, 1e30f}) {
-            assertThat(BackgroundShader.code(v)).as("%s", v).isEqualTo(-1);
+    void codesAndTheirFloatsShadeToTheSameBits() {
+        SplittableRandom r = new SplittableRandom(13);
+        int w = 41, h = 23;
+        Picture codes = randomCodes(r, w, h), floats = new Picture(w, h, codes.floats());
+        assertThat(floats.codes()).isNull();
+        for (boolean original : new boolean[] {false, true}) {
+            for (double gamma : new double[] {1, 2.2}) {
+                BackgroundShader a = new BackgroundShader(new PanoramaBackground("c", codes, 0.3), gamma, original);
+                BackgroundShader b = new BackgroundShader(new PanoramaBackground("f", floats, 0.3), gamma, original);
+                assertThat(a.nonNegative()).isTrue();
+                assertThat(b.nonNegative()).isTrue();
+                double[] got = new double[3], want = new double[3];
+                for (int i = 0; i < 20_000; i++) {
+                    double dx = r.nextDouble(-1, 1), dy = r.nextDouble(-1, 1), dz = r.nextDouble(-1, 1);
+                    a.shade(dx, dy, dz, got);
+                    b.shade(dx, dy, dz, want);
+                    assertThat(got).as("original %s, gamma %s", original, gamma).containsExactly(want);
+                }
+            }
         }
     }
 
     @Test
-    void aPictureIsPackedOnceAndAnotherGetsItsOwnTexels() {
+    void aPictureOfCodesStandsForTheirFloats() {
+        int[] all = new int[256];
+        for (int k = 0; k < 256; k++) all[k] = k << 16 | (255 - k) << 8 | k * 7 % 256;
+        Picture pic = Picture.ofCodes(16, 16, all);
+        float[] f = pic.floats();
+        assertThat(f).hasSize(3 * 256);
+        assertThat(pic.floats()).isNotSameAs(f).containsExactly(f);
+        for (int k = 0; k < 256; k++) {
+            int x = k % 16, y = k / 16;
+            float[] want = {k / 255f, (255 - k) / 255f, k * 7 % 256 / 255f};
+            for (int c = 0; c < 3; c++) {
+                assertThat(pic.get(x, y, c)).isEqualTo(want[c]);
+                assertThat(f[3 * k + c]).isEqualTo(want[c]);
+            }
+        }
+        // The top byte is not read (getRGB's alpha, had a decoder left it).
+        assertThat(Picture.ofCodes(1, 1, new int[] {0xFF102030}).get(0, 0, 0)).isEqualTo(0x10 / 255f);
+        assertThatThrownBy(() -> Picture.ofCodes(4, 4, new int[15])).isInstanceOf(IllegalArgumentException.class);
+        assertThatThrownBy(() -> new Picture(4, 4, new float[47])).isInstanceOf(IllegalArgumentException.class);
+    }
+
+    @Test
+    void shadersOfOnePictureShareItsCodes() {
         SplittableRandom r = new SplittableRandom(5);
         int w = 16, h = 8;
-        float[] a = new float[w * h * 3], b = new float[w * h * 3];
-        for (int i = 0; i < a.length; i++) {
-            a[i] = r.nextInt(256) / 255f;
-            b[i] = r.nextInt(256) / 255f;
-        }
-        Picture first = new Picture(w, h, a), second = new Picture(w, h, b);
+        Picture first = randomCodes(r, w, h), second = randomCodes(r, w, h);
         BackgroundShader one = new BackgroundShader(new PanoramaBackground("a", first, 0), 2.2);
         BackgroundShader again = new BackgroundShader(new PanoramaBackground("a", first, 0), 1);
+        BackgroundShader old = new BackgroundShader(new PanoramaBackground("a", first, 0), 2.2, true);
         assertThat(again.sharesTexels(one)).isTrue();
+        assertThat(old.sharesTexels(one)).isTrue();
         BackgroundShader other = new BackgroundShader(new PanoramaBackground("b", second, 0), 2.2);
         assertThat(other.sharesTexels(one)).isFalse();
         double[] got = new double[3], want = new double[3];
@@ -99,6 +130,12 @@ class PanoramaStoreTest {
             reference(first, 0, 1, dx, dy, dz, want);
             for (int c = 0; c < 3; c++) assertThat(got[c]).isCloseTo(want[c], within(1e-9));
         }
+    }
+
+    private static Picture randomCodes(SplittableRandom r, int w, int h) {
+        int[] codes = new int[w * h];
+        for (int i = 0; i < codes.length; i++) codes[i] = r.nextInt(1 << 24);
+        return Picture.ofCodes(w, h, codes);
     }
 
     /** The panorama of rendering-model.md, written out plainly. */
