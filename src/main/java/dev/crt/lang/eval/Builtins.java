@@ -10,7 +10,6 @@ import dev.crt.lang.value.VectorValue;
 import dev.crt.scene.Rgb;
 import java.util.HashMap;
 import java.util.Map;
-import java.util.Random;
 import java.util.Set;
 import java.util.function.DoubleUnaryOperator;
 
@@ -30,7 +29,7 @@ final class Builtins {
 
         void warn(String message);
 
-        Random random();
+        ScriptRandom random();
     }
 
     /** What a built-in computes from its checked call. */

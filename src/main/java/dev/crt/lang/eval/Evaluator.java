@@ -37,7 +37,6 @@ import java.util.Iterator;
 import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Map;
-import java.util.Random;
 import java.util.Set;
 import org.antlr.v4.runtime.ParserRuleContext;
 import org.antlr.v4.runtime.Token;
@@ -62,7 +61,7 @@ public final class Evaluator extends CRTBaseVisitor<Value> {
     private final TextPositions positions;
     private final Budget budget;
     private boolean ranOutOfMemory;
-    private final Random random = new Random(RANDOM_SEED);
+    private final ScriptRandom random = new ScriptRandom(RANDOM_SEED);
     private final ObjectBuilder objects;
     private final WrittenObjects written;
     private final SettingsState settings;
@@ -725,7 +724,7 @@ public final class Evaluator extends CRTBaseVisitor<Value> {
         public void warn(String message) { Evaluator.this.warn(message, span(ctx)); }
 
         @Override
-        public Random random() { return random; }
+        public ScriptRandom random() { return random; }
     }
 
     private Value callMacro(String name, Value callee, CRTParser.CallContext ctx) {
