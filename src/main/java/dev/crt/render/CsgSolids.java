@@ -56,7 +56,7 @@ final class CsgSolids {
     private int[] bvhStart = new int[4];
     private Bvh[] bvh = new Bvh[4];
     private double[] scale = new double[4];
-    /** Per tree, its bounds (min x, y, z, max x, y, z) when finite, for {@link #mayMeet}; else NaN. */
+    /** Per tree, its bounds (min x, y, z, max x, y, z) as {@link BvhBuilder#put} writes them when finite, for {@link #mayMeet}; else NaN. */
     private double[] treeBounds = new double[6 * 4];
     /**
      * Per tree: whether it is one operation on two primitives, always tested (no BVH), with a
@@ -118,14 +118,9 @@ final class CsgSolids {
         for (int k = leafStart[tree]; k < leafSize; k++) sc = Math.max(sc, shapes.scale[leafShape[k]]);
         scale[tree] = sc;
         bounds[0] = b;
-        boolean finite = !b.isEmpty() && b.isFinite();
-        double[] tb = treeBounds;
-        tb[6 * tree] = finite ? b.min().x() : Double.NaN;
-        tb[6 * tree + 1] = finite ? b.min().y() : Double.NaN;
-        tb[6 * tree + 2] = finite ? b.min().z() : Double.NaN;
-        tb[6 * tree + 3] = finite ? b.max().x() : Double.NaN;
-        tb[6 * tree + 4] = finite ? b.max().y() : Double.NaN;
-        tb[6 * tree + 5] = finite ? b.max().z() : Double.NaN;
+        // The box the scene's BVH gives the tree's leaf (an ulp wider on every side).
+        if (!b.isEmpty() && b.isFinite()) BvhBuilder.put(b, treeBounds, tree);
+        else Arrays.fill(treeBounds, 6 * tree, 6 * tree + 6, Double.NaN);
         return tree;
     }
 
