@@ -10,9 +10,10 @@ import java.util.concurrent.RecursiveTask;
 /**
  * Builds a {@link Bvh} over item bounds with the binned surface area heuristic (16 bins on each
  * axis, or on the widest axis only for ranges of more than {@value #ONE_AXIS_ABOVE} items);
- * builds of more than {@value #MORTON_ABOVE} items finish their ranges of up to
- * {@value #MORTON_RANGE} by Morton order instead (docs/benchmarks.md section 18). Subtrees of more
- * than 10,000 items are built in parallel with fork/join, ranges of more than
+ * builds of more than {@value #MORTON_ABOVE} items bin every range on its widest axis only and
+ * finish their ranges of up to {@value #MORTON_RANGE} by Morton order instead (docs/benchmarks.md
+ * sections 18 and 40). Subtrees of more than 10,000 items are built in parallel with fork/join,
+ * ranges of more than
  * {@value #PARALLEL_SPLIT_ABOVE} are measured and binned in parts on every thread, and the final
  * renumbering and boxes run in parts too; the tree is the same for any number of threads. The items' bounds are reordered in the caller's array rather than copied, the build
  * records only each node's children, and the boxes are computed at the end into an array of the
@@ -26,7 +27,9 @@ final class BvhBuilder {
     /**
      * Ranges of more items than this are split on one axis (docs/benchmarks.md section 10: warm
      * builds of a million triangles about 8 % faster, renders as fast); smaller ones, every scene's
-     * own hierarchy among them, try all three.
+     * own hierarchy among them, try all three, except in builds of more than {@link #MORTON_ABOVE}
+     * items, which bin on one axis throughout (section 40: a million spheres' first build in a
+     * fresh JVM about a fifth faster, the tree's SAH cost 0.5 % higher).
      */
     static final int ONE_AXIS_ABOVE = 1 << 16;
     /**
@@ -366,6 +369,8 @@ final class BvhBuilder {
         int n = hi - lo;
         if (sc.keys == null) {
             sc.keys = new long[MORTON_RANGE];
+            sc.sorted = new long[MORTON_RANGE];
+            sc.digits = new int[1 << MORTON_DIGIT];
             sc.orderCopy = new int[MORTON_RANGE];
             sc.boundsCopy = new double[6 * MORTON_RANGE];
         }
@@ -379,7 +384,7 @@ final class BvhBuilder {
             int x = grid(centroid(i, 0), cmin[0], k), y = grid(centroid(i, 1), cmin[1], k), z = grid(centroid(i, 2), cmin[2], k);
             keys[i - lo] = (long) (spread(x) << 2 | spread(y) << 1 | spread(z)) << 32 | (i - lo);
         }
-        Arrays.sort(keys, 0, n);
+        keys = sortByCode(sc, n);
         int[] orderCopy = sc.orderCopy;
         double[] boundsCopy = sc.boundsCopy;
         for (int j = 0; j < n; j++) {
@@ -390,6 +395,48 @@ final class BvhBuilder {
         System.arraycopy(orderCopy, 0, order, lo, n);
         System.arraycopy(boundsCopy, 0, bounds, 6 * lo, 6 * n);
         return mortonSplit(lo, hi, lo, at, sc, level);
+    }
+
+    /** Bits of the Morton code sorted by each pass of {@link #sortByCode}: three passes over the 30. */
+    static final int MORTON_DIGIT = 10;
+
+    /** Sorts the first n of {@code sc.keys} by {@link #sortByCode(long[], long[], int[], int)}, leaving them in {@code sc.keys}; returns it. */
+    private static long[] sortByCode(Scratch sc, int n) {
+        long[] sorted = sortByCode(sc.keys, sc.sorted, sc.digits, n);
+        if (sorted != sc.keys) {
+            sc.sorted = sc.keys;
+            sc.keys = sorted;
+        }
+        return sorted;
+    }
+
+    /**
+     * Sorts the first n of {@code keys} (a 30-bit Morton code above a range position in the low
+     * 32 bits, each position once, in increasing order) by code, ties in position order: the order
+     * a sort of the keys as numbers gives, by three stable passes of ten bits (least significant
+     * first) through {@code spare} instead of comparisons. Returns the array that holds the result
+     * (one of the two); {@code digits} has 2^10 counts.
+     */
+    static long[] sortByCode(long[] keys, long[] spare, int[] digits, int n) {
+        long[] from = keys, to = spare;
+        int mask = (1 << MORTON_DIGIT) - 1;
+        for (int shift = 32; shift < 62; shift += MORTON_DIGIT) {
+            Arrays.fill(digits, 0);
+            for (int i = 0; i < n; i++) digits[(int) (from[i] >>> shift) & mask]++;
+            for (int d = 0, sum = 0; d <= mask; d++) {
+                int c = digits[d];
+                digits[d] = sum;
+                sum += c;
+            }
+            for (int i = 0; i < n; i++) {
+                long key = from[i];
+                to[digits[(int) (key >>> shift) & mask]++] = key;
+            }
+            long[] t = from;
+            from = to;
+            to = t;
+        }
+        return from;
     }
 
     /** The subtree over [a, b) of the range sorted by {@link #mortonSubtree} from {@code lo}. */
@@ -468,6 +515,9 @@ final class BvhBuilder {
         int depth;
         /** Sort keys, then Morton codes, of {@link #mortonSubtree}'s range, and its reordering space; made when first needed. */
         long[] keys;
+        /** The other array of {@link #sortByCode}'s passes, and its digit counts. */
+        long[] sorted;
+        int[] digits;
         int[] orderCopy;
         double[] boundsCopy;
 
@@ -493,7 +543,7 @@ final class BvhBuilder {
             double extent = cmax[axis] - cmin[axis];
             scale[axis] = extent > 0 ? BINS / extent : 0;
         }
-        if (n > ONE_AXIS_ABOVE) {
+        if (n > ONE_AXIS_ABOVE || morton) {
             // Binned on the axis of the centroids' largest extent only: a third of the binning work
             // where a range is large enough for the three axes' best splits to differ little.
             int widest = cmax[0] - cmin[0] >= cmax[1] - cmin[1] ? 0 : 1;

@@ -68,48 +68,15 @@ final class SceneGeometry {
         numberMaterials(m, chunks, found);
         List<Integer> outside = new ArrayList<>();
         List<Integer> outsideShape = new ArrayList<>();
-        CsgSolids probeCsg = new CsgSolids();
-        Materials probeMaterials = new Materials();
         int slow = 0;
         for (ChunkMaterials f : found) slow += f.others;
-        if (slow > 0) {
-            for (int index = 0; index < m; index++) {
-                if (what[index] != OUTSIDE) continue;
-                Entity e = entities.get(index);
-                int s = -1;
-                Aabb b;
-                if (e instanceof Primitive p) {
-                    s = others.add(p, p.transform(), 0);
-                    b = others.bounds(s);
-                } else {
-                    b = probeCsg.bounds((Csg) e, Transform.IDENTITY, others, q -> probeMaterials.indexOf(q.material()));
-                }
-                if (b.isEmpty()) continue;
-                if (s >= 0) others.material[s] = materials.indexOf(((Primitive) e).material());
-                if (b.isFinite()) {
-                    what[index] = s >= 0 ? -(s + 3) : CSG;
-                    BvhBuilder.put(b, flat, index);
-                } else {
-                    outside.add(index);
-                    outsideShape.add(s);
-                }
-            }
-        }
+        // The passes over every entity are methods of their own, as the builder's are: this
+        // constructor runs once, and a loop in it had the JIT compile all of it (a third of a
+        // second on one core in the middle of a million spheres' build) for nothing.
+        int csgTrees = slow > 0 ? measureOthers(entities, flat, outside, outsideShape) : 0;
         // The bounded entities, numbered in the scene's order; their boxes moved together.
-        int[] entity = null;
-        int n = m;
-        if (slow > 0) {
-            n = 0;
-            for (int index = 0; index < m; index++) if (what[index] != OUTSIDE) n++;
-            if (n < m) {
-                entity = new int[n];
-                for (int index = 0, k = 0; index < m; index++) {
-                    if (what[index] == OUTSIDE) continue;
-                    if (k != index) System.arraycopy(flat, 6 * index, flat, 6 * k, 6);
-                    entity[k++] = index;
-                }
-            }
-        }
+        int[] entity = slow > 0 ? bounded(flat) : null;
+        int n = entity != null ? entity.length : m;
         int[] order = new int[n];
         if (n > LINEAR_LIMIT) {
             bvh = BvhBuilder.build(flat, n, order);
@@ -127,18 +94,8 @@ final class SceneGeometry {
         items = new int[n];
         // The entity at each traversal position, written over its number among the bounded ones.
         int[] byOrder = order;
-        if (entity != null) for (int i = 0; i < n; i++) byOrder[i] = entity[order[i]];
-        for (int i = 0; i < n; ) {
-            int j = i;
-            while (j < n && what[byOrder[j]] != CSG) j++;
-            if (j > i) {
-                placeRun(sphereData, byOrder, i, j);
-                i = j;
-            } else {
-                int index = byOrder[i];
-                items[i++] = place(entities.get(index), -1, index, out);
-            }
-        }
+        if (entity != null) renumber(order, entity);
+        placeBounded(entities, sphereData, byOrder, csgTrees, out);
         unbounded = new int[outside.size()];
         for (int i = 0; i < unbounded.length; i++) {
             int index = outside.get(i);
@@ -148,6 +105,96 @@ final class SceneGeometry {
         owners = null;
         what = null;
         others = null;
+    }
+
+    /**
+     * The first pass over the entities other than plain spheres (marked {@link #OUTSIDE} by
+     * {@link #measureSpheres}), in the scene's order: primitives flattened into {@link #others},
+     * bounds of the bounded ones into {@code flat}, the unbounded ones listed (with their shape in
+     * {@link #others}, or −1 for a CSG tree). Returns the number of bounded CSG trees.
+     */
+    private int measureOthers(List<Entity> entities, double[] flat, List<Integer> outside, List<Integer> outsideShape) {
+        CsgSolids probeCsg = new CsgSolids();
+        Materials probeMaterials = new Materials();
+        int[] what = this.what;
+        int csgTrees = 0;
+        for (int index = 0; index < what.length; index++) {
+            if (what[index] != OUTSIDE) continue;
+            Entity e = entities.get(index);
+            int s = -1;
+            Aabb b;
+            if (e instanceof Primitive p) {
+                s = others.add(p, p.transform(), 0);
+                b = others.bounds(s);
+            } else {
+                b = probeCsg.bounds((Csg) e, Transform.IDENTITY, others, q -> probeMaterials.indexOf(q.material()));
+            }
+            if (b.isEmpty()) continue;
+            if (s >= 0) others.material[s] = materials.indexOf(((Primitive) e).material());
+            if (b.isFinite()) {
+                what[index] = s >= 0 ? -(s + 3) : CSG;
+                if (s < 0) csgTrees++;
+                BvhBuilder.put(b, flat, index);
+            } else {
+                outside.add(index);
+                outsideShape.add(s);
+            }
+        }
+        return csgTrees;
+    }
+
+    /**
+     * The entities with bounds (not {@link #OUTSIDE}), by their index in the scene, their boxes
+     * moved to the front of {@code flat} in that order; null when every entity has bounds.
+     */
+    private int[] bounded(double[] flat) {
+        int[] what = this.what;
+        int m = what.length, n = 0;
+        for (int index = 0; index < m; index++) if (what[index] != OUTSIDE) n++;
+        if (n == m) return null;
+        int[] entity = new int[n];
+        for (int index = 0, k = 0; index < m; index++) {
+            if (what[index] == OUTSIDE) continue;
+            if (k != index) System.arraycopy(flat, 6 * index, flat, 6 * k, 6);
+            entity[k++] = index;
+        }
+        return entity;
+    }
+
+    /** Replaces each number among the bounded entities in {@code order} by the entity's index in the scene. */
+    private static void renumber(int[] order, int[] entity) {
+        for (int i = 0; i < order.length; i++) order[i] = entity[order[i]];
+    }
+
+    /**
+     * The second pass over the bounded entities, in traversal order: runs of primitives placed
+     * by {@link #placeRun}, CSG trees one by one on this thread. Without CSG trees the whole
+     * order is one run, found without looking at each entity.
+     */
+    private void placeBounded(List<Entity> entities, double[] sphereData, int[] byOrder, int csgTrees, Aabb[] out) {
+        int n = byOrder.length;
+        if (csgTrees == 0) {
+            if (n > 0) placeRun(sphereData, byOrder, 0, n);
+            return;
+        }
+        for (int i = 0; i < n; ) {
+            int j = runEnd(byOrder, i);
+            if (j > i) {
+                placeRun(sphereData, byOrder, i, j);
+                i = j;
+            } else {
+                int index = byOrder[i];
+                items[i++] = place(entities.get(index), -1, index, out);
+            }
+        }
+    }
+
+    /** The end of the run of primitives that starts at traversal position {@code i}: the first CSG tree's position, or the end. */
+    private int runEnd(int[] byOrder, int i) {
+        int[] what = this.what;
+        int j = i;
+        while (j < byOrder.length && what[byOrder[j]] != CSG) j++;
+        return j;
     }
 
     /**

@@ -2,6 +2,7 @@ package dev.crt.render;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
+import java.util.Arrays;
 import java.util.SplittableRandom;
 import org.junit.jupiter.api.Test;
 
@@ -136,5 +137,29 @@ class BvhBuilderTest {
     private static double area(double[] b) {
         double x = b[3] - b[0], y = b[4] - b[1], z = b[5] - b[2];
         return x * y + y * z + z * x;
+    }
+
+    /**
+     * The Morton-finished ranges are ordered by their codes with a radix sort: it must give the
+     * order of a sort of the keys as numbers (code, then position), with codes spread over all
+     * 30 bits, codes of a few values (many ties), and a range of one code.
+     */
+    @Test
+    void mortonKeysSortAsNumbersDo() {
+        SplittableRandom r = new SplittableRandom(7);
+        int[] digits = new int[1 << BvhBuilder.MORTON_DIGIT];
+        for (int kind = 0; kind < 3; kind++) {
+            for (int n : new int[] {1, 2, 17, 1000, BvhBuilder.MORTON_RANGE}) {
+                long[] keys = new long[BvhBuilder.MORTON_RANGE], spare = new long[BvhBuilder.MORTON_RANGE];
+                for (int i = 0; i < n; i++) {
+                    long code = kind == 0 ? r.nextInt(1 << 30) : kind == 1 ? (long) r.nextInt(5) << (10 * r.nextInt(3)) : 12345;
+                    keys[i] = code << 32 | i;
+                }
+                long[] expected = Arrays.copyOf(keys, n);
+                Arrays.sort(expected);
+                long[] sorted = BvhBuilder.sortByCode(keys, spare, digits, n);
+                assertThat(Arrays.copyOf(sorted, n)).as("kind %d, %d keys", kind, n).isEqualTo(expected);
+            }
+        }
     }
 }
