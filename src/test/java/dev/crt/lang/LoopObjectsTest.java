@@ -58,6 +58,28 @@ class LoopObjectsTest {
         }
     }
 
+    /**
+     * Expressions in a loop run as closures compiled once, with the operators and names read from
+     * their tokens then and a sign applied to a literal worked out then; they must give what the
+     * top level's direct evaluation gives, the values and the mistakes (reported when they run).
+     */
+    @ParameterizedTest
+    @ValueSource(strings = {
+        "-10", "-(2.5)", "- -3", "+4", "-vec3(1, 2, 3)[0]", "-rgb(0.5, 0.25, 1)[1]", "2 * 3 % 4 - 1 / 8", "1 - 2 + 3",
+        "(1 < 2 ? -1 : 1) * 3", "-\"a\"", "-true", "1 < \"a\"", "\"a\" == 1 ? 1 : 0", "2 % 0", "-1 / 0",
+        "vec3(1, 2, 3) * 2 - vec3(1, 1, 1)", "[1, 2] + 3", "4 - [1]",
+    })
+    void anExpressionInALoopGivesWhatItGivesAtTheTopLevel(String expression) {
+        String literal = "Sphere { center -> vec3(" + expression + ", 0, 0) radius -> 1 }";
+        String inLoop = Scripts.CAMERA + LOOP + literal + LOOP_END;
+        String topLevel = Scripts.CAMERA + "Scene { " + " ".repeat(LOOP.length() - "Scene { ".length()) + literal + " }";
+        CompileResult loop = Scripts.compile(inLoop), top = Scripts.compile(topLevel);
+        assertThat(loop.diagnostics()).as("diagnostics in a loop:\n%s\nat the top level:\n%s", Scripts.render(loop, inLoop),
+                Scripts.render(top, topLevel)).isEqualTo(top.diagnostics());
+        assertThat(loop.scene() == null ? null : loop.scene().entities())
+                .isEqualTo(top.scene() == null ? null : top.scene().entities());
+    }
+
     /** A diagnostic's severity and message, with the places it names ("first at 2:49") left out. */
     private static String withoutPlaces(Diagnostic d) {
         return d.severity() + " " + d.message().replaceAll("\\d+:\\d+", "L:C");

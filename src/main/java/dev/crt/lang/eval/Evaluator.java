@@ -315,6 +315,12 @@ public final class Evaluator extends CRTBaseVisitor<Value> {
         Value run();
     }
 
+    /** The code of an expression whose value is known when it is compiled: a literal, or a sign applied to one. */
+    private record Constant(Value value) implements Code {
+        @Override
+        public Value run() { return value; }
+    }
+
     /** True inside loops and macro bodies, where the same expressions run many times. */
     boolean repeats() { return loopDepth != 0 || !callStack.isEmpty(); }
 
@@ -354,8 +360,7 @@ public final class Evaluator extends CRTBaseVisitor<Value> {
         if (c instanceof CRTParser.IntLiteralContext || c instanceof CRTParser.FloatLiteralContext
                 || c instanceof CRTParser.StringLiteralContext || c instanceof CRTParser.BooleanLiteralContext) {
             try {
-                Value constant = visit(c);
-                return () -> constant;
+                return new Constant(visit(c));
             } catch (ScriptError e) {
                 return () -> visit(c);
             }
@@ -369,7 +374,10 @@ public final class Evaluator extends CRTBaseVisitor<Value> {
         }
         if (c instanceof CRTParser.AssignmentContext a && !a.IDENT().getText().equals("t")) {
             Code value = compile(a.getChild(2));
-            return () -> assign(a, value.run());
+            // The names and operators are read from their tokens once here: a token's text is a
+            // new string each time it is asked for, which the map then hashes again.
+            String name = a.IDENT().getText();
+            return () -> assign(a, name, value.run());
         }
         if (c instanceof CRTParser.ComparisonContext k) {
             Code x = compile(k.getChild(0)), y = compile(k.getChild(2));
@@ -394,15 +402,25 @@ public final class Evaluator extends CRTBaseVisitor<Value> {
         }
         if (c instanceof CRTParser.SignContext n) {
             Code x = compile(n.getChild(1));
+            if (x instanceof Constant k) {
+                // -10 in a loop is the same number on every turn (an error, if any, stays at run time).
+                try {
+                    return new Constant(sign(n, k.value()));
+                } catch (ScriptError e) {
+                    // reported when it runs
+                }
+            }
             return () -> sign(n, x.run());
         }
         if (c instanceof CRTParser.MultiplicativeContext m) {
             Code x = compile(m.getChild(0)), y = compile(m.getChild(2));
-            return () -> multiply(m, x.run(), y.run());
+            String op = m.op.getText();
+            return () -> Arithmetic.multiplicative(op, x.run(), y.run(), m, this);
         }
         if (c instanceof CRTParser.AdditiveContext m) {
             Code x = compile(m.getChild(0)), y = compile(m.getChild(2));
-            return () -> add(m, x.run(), y.run());
+            String op = m.op.getText();
+            return () -> add(m, op, x.run(), y.run());
         }
         if (c instanceof CRTParser.ModifiedContext m) {
             Code target = compile(m.getChild(0));
@@ -461,8 +479,12 @@ public final class Evaluator extends CRTBaseVisitor<Value> {
     }
 
     private Value assign(CRTParser.AssignmentContext ctx, Value value) {
+        return assign(ctx, ctx.IDENT().getText(), value);
+    }
+
+    private Value assign(CRTParser.AssignmentContext ctx, String name, Value value) {
         if (recorder != null && locals == null) recorder.assigned(ctx);
-        scope().put(ctx.IDENT().getText(), value);
+        scope().put(name, value);
         return value;
     }
 
@@ -487,13 +509,12 @@ public final class Evaluator extends CRTBaseVisitor<Value> {
     }
 
     private Value compare(CRTParser.ComparisonContext ctx, Value a, Value b) {
-        String op = ctx.op.getText();
         int type = ctx.op.getType();
         if (type == CRTParser.EQ || type == CRTParser.NE) {
-            if (!a.typeName().equals(b.typeName())) throw badOperands(op, a, b, ctx);
+            if (!a.typeName().equals(b.typeName())) throw badOperands(ctx.op.getText(), a, b, ctx);
             return BooleanValue.of(same(a, b) == (type == CRTParser.EQ));
         }
-        if (!(a instanceof NumberValue x) || !(b instanceof NumberValue y)) throw badOperands(op, a, b, ctx);
+        if (!(a instanceof NumberValue x) || !(b instanceof NumberValue y)) throw badOperands(ctx.op.getText(), a, b, ctx);
         return BooleanValue.of(switch (ctx.op.getType()) {
             case CRTParser.LT -> x.value() < y.value();
             case CRTParser.LE -> x.value() <= y.value();
@@ -584,11 +605,10 @@ public final class Evaluator extends CRTBaseVisitor<Value> {
 
     @Override
     public Value visitAdditive(CRTParser.AdditiveContext ctx) {
-        return add(ctx, visit(ctx.getChild(0)), visit(ctx.getChild(2)));
+        return add(ctx, ctx.op.getText(), visit(ctx.getChild(0)), visit(ctx.getChild(2)));
     }
 
-    private Value add(CRTParser.AdditiveContext ctx, Value a, Value b) {
-        String op = ctx.op.getText();
+    private Value add(CRTParser.AdditiveContext ctx, String op, Value a, Value b) {
         if (a instanceof EntityValue x && b instanceof EntityValue y) {
             CsgOperation operation = switch (op.charAt(0)) {
                 case '+' -> CsgOperation.UNION;
