@@ -78,6 +78,34 @@ class LauncherTest {
         assertThat(run.exitValue()).as(out).isZero();
         assertThat(out).as("the JVM's word on the start-up cache").contains("crt ").doesNotContainIgnoringCase("error")
                 .doesNotContain("Unable to map").doesNotContain("mismatch");
+
+        // Batch commands run with the throughput collector, tenuring at once, and transparent huge
+        // pages where the kernel gives them on request (docs/benchmarks.md, section 40); a
+        // collector or page setting in CRT_JAVA_OPTS is left alone.
+        Path setting = Path.of("/sys/kernel/mm/transparent_hugepage/enabled");
+        boolean onRequest = Files.isReadable(setting) && Files.readString(setting).contains("[madvise]");
+        String flags = flags(script, "-Xss16m -XX:+PrintCommandLineFlags");
+        assertThat(flags).contains("-XX:+UseParallelGC", "-XX:MaxTenuringThreshold=0");
+        if (onRequest) assertThat(flags).contains("-XX:+UseTransparentHugePages");
+        else assertThat(flags).doesNotContain("UseTransparentHugePages");
+        assertThat(flags(script, "-Xss16m -XX:+UseG1GC -XX:-UseTransparentHugePages -XX:+PrintCommandLineFlags"))
+                .contains("-XX:+UseG1GC", "-XX:-UseTransparentHugePages")
+                .doesNotContain("UseParallelGC", "MaxTenuringThreshold=0", "+UseTransparentHugePages");
+    }
+
+    /** What {@code crt check} prints with CRT_JAVA_OPTS set to {@code options}. */
+    private String flags(Path script, String options) throws Exception {
+        ProcessBuilder check = new ProcessBuilder("bash", clone.resolve("crt").toString(), "check", script.toString())
+                .directory(clone.toFile())
+                .redirectErrorStream(true)
+                .redirectOutput(clone.resolve("flags").toFile());
+        check.environment().put("CRT_JAVA_OPTS", options);
+        Process run = check.start();
+        assertThat(run.waitFor(120, TimeUnit.SECONDS)).isTrue();
+        String out = Files.readString(clone.resolve("flags"));
+        assertThat(run.exitValue()).as(out).isZero();
+        assertThat(out).contains("a.crt: ok");
+        return out;
     }
 
     private Process start(Path script, String n) throws IOException {
