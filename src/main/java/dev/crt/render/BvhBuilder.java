@@ -13,9 +13,9 @@ import java.util.concurrent.RecursiveTask;
  * builds of more than {@value #MORTON_ABOVE} items bin every range on its widest axis only and
  * finish their ranges of up to {@value #MORTON_RANGE} by Morton order instead (docs/benchmarks.md
  * sections 18 and 40). Subtrees of more than 10,000 items are built in parallel with fork/join,
- * ranges of more than
- * {@value #PARALLEL_SPLIT_ABOVE} are measured and binned in parts on every thread, and the final
- * renumbering and boxes run in parts too; the tree is the same for any number of threads. The items' bounds are reordered in the caller's array rather than copied, the build
+ * ranges of more than {@value #PARALLEL_SPLIT_ABOVE} are measured and binned in parts on every
+ * thread, and the final renumbering and boxes run in parts too; the tree is the same for any number
+ * of threads. The items' bounds are reordered in the caller's array rather than copied, the build
  * records only each node's children, and the boxes are computed at the end into an array of the
  * final size: at most about 134 bytes per item while building, the tree included, where copies
  * and a second layout took 300.

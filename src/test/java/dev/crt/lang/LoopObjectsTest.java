@@ -38,13 +38,7 @@ class LoopObjectsTest {
         "Cone { from -> vec3(0, 0, 0) to -> vec3(0, 0, 0) radius -> 1 }",
     })
     void aLiteralInALoopOrAMacroGivesWhatItGivesAtTheTopLevel(String literal) {
-        String inLoop = Scripts.CAMERA + LOOP + literal + LOOP_END;
-        String topLevel = Scripts.CAMERA + "Scene { " + " ".repeat(LOOP.length() - "Scene { ".length()) + literal + " }";
-        CompileResult loop = Scripts.compile(inLoop), top = Scripts.compile(topLevel);
-        assertThat(loop.diagnostics()).as("diagnostics in a loop:\n%s\nat the top level:\n%s", Scripts.render(loop, inLoop),
-                Scripts.render(top, topLevel)).isEqualTo(top.diagnostics());
-        assertThat(loop.scene() == null ? null : loop.scene().entities())
-                .isEqualTo(top.scene() == null ? null : top.scene().entities());
+        CompileResult top = sameInALoopAsAtTheTopLevel(literal);
 
         // In a macro called twice: the plan is made on the first call and used on the second.
         String macro = "m = Macro () { " + literal + " }";
@@ -71,6 +65,11 @@ class LoopObjectsTest {
     })
     void anExpressionInALoopGivesWhatItGivesAtTheTopLevel(String expression) {
         String literal = "Sphere { center -> vec3(" + expression + ", 0, 0) radius -> 1 }";
+        sameInALoopAsAtTheTopLevel(literal);
+    }
+
+    /** Compiles {@code literal} in a loop and at the top level; checks both give the same diagnostics and entities; returns the top level's. */
+    private static CompileResult sameInALoopAsAtTheTopLevel(String literal) {
         String inLoop = Scripts.CAMERA + LOOP + literal + LOOP_END;
         String topLevel = Scripts.CAMERA + "Scene { " + " ".repeat(LOOP.length() - "Scene { ".length()) + literal + " }";
         CompileResult loop = Scripts.compile(inLoop), top = Scripts.compile(topLevel);
@@ -78,6 +77,7 @@ class LoopObjectsTest {
                 Scripts.render(top, topLevel)).isEqualTo(top.diagnostics());
         assertThat(loop.scene() == null ? null : loop.scene().entities())
                 .isEqualTo(top.scene() == null ? null : top.scene().entities());
+        return top;
     }
 
     /** A diagnostic's severity and message, with the places it names ("first at 2:49") left out. */
