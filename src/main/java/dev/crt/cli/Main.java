@@ -4,6 +4,7 @@ import java.io.PrintWriter;
 import java.net.URISyntaxException;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.List;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
 
@@ -12,9 +13,6 @@ import picocli.CommandLine.Command;
         mixinStandardHelpOptions = true,
         versionProvider = Main.Version.class,
         description = "CRT, the Cathode Ray Tracer: compile and render .crt scene scripts.",
-        subcommands = {CheckCommand.class, RenderCommand.class, AnimateCommand.class, AccuracyCommand.class,
-                PreviewCommand.class, StudioCommand.class,
-                CommandLine.HelpCommand.class},
         footer = {"", ExitCode.HELP_LINE})
 public final class Main implements Runnable {
     /** A bug in CRT rather than a problem with the user's input (EX_SOFTWARE). */
@@ -22,6 +20,10 @@ public final class Main implements Runnable {
 
     @CommandLine.Spec
     CommandLine.Model.CommandSpec spec;
+
+    /** The commands, in the order help lists them (picocli's own {@code help} last). */
+    private static final List<Class<?>> COMMANDS = List.of(CheckCommand.class, RenderCommand.class, AnimateCommand.class,
+            AccuracyCommand.class, PreviewCommand.class, StudioCommand.class, CommandLine.HelpCommand.class);
 
     @Override
     public void run() {
@@ -58,7 +60,7 @@ public final class Main implements Runnable {
 
     /** Runs crt with {@code args}, printing results to {@code out} and diagnostics to {@code err}. */
     public static int run(PrintWriter out, PrintWriter err, String... args) {
-        CommandLine cl = new CommandLine(new Main());
+        CommandLine cl = commandLine(args);
         cl.setOut(out);
         cl.setErr(err);
         // As git and cargo do: the error, then where help is, not 40 lines of help burying the error.
@@ -78,6 +80,27 @@ public final class Main implements Runnable {
         } catch (OutOfMemoryError e) {
             return outOfMemory(err);
         }
+    }
+
+    /**
+     * The command line for {@code args}: when they start with the name of a command other than
+     * help, that command alone is registered, else all of them (help lists them all, and a
+     * mistyped name is told from the list). picocli reads every option of every registered command
+     * by reflection when the command line is made, and its classes cannot go in the JVM's start-up
+     * cache (Java 5 class files): with every command registered, each run through the launcher
+     * took about 0.08 s longer and 0.2 s more CPU (docs/benchmarks.md, section 40).
+     */
+    static CommandLine commandLine(String... args) {
+        CommandLine cl = new CommandLine(new Main());
+        String first = args.length > 0 ? args[0] : "";
+        for (Class<?> command : COMMANDS) {
+            String name = command.getAnnotation(Command.class).name();
+            if (!name.equals(first) || name.equals("help")) continue;
+            cl.addSubcommand(name, command);
+            return cl;
+        }
+        for (Class<?> command : COMMANDS) cl.addSubcommand(command);
+        return cl;
     }
 
     /** picocli's message, except for a mistyped command, which is named as one. */
