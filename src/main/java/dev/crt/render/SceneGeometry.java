@@ -93,9 +93,8 @@ final class SceneGeometry {
         Aabb[] out = new Aabb[1];
         items = new int[n];
         // The entity at each traversal position, written over its number among the bounded ones.
-        int[] byOrder = order;
         if (entity != null) renumber(order, entity);
-        placeBounded(entities, sphereData, byOrder, csgTrees, out);
+        placeBounded(entities, sphereData, order, csgTrees, out);
         unbounded = new int[outside.size()];
         for (int i = 0; i < unbounded.length; i++) {
             int index = outside.get(i);
@@ -168,17 +167,13 @@ final class SceneGeometry {
 
     /**
      * The second pass over the bounded entities, in traversal order: runs of primitives placed
-     * by {@link #placeRun}, CSG trees one by one on this thread. Without CSG trees the whole
-     * order is one run, found without looking at each entity.
+     * by {@link #placeRun}, CSG trees one by one on this thread.
      */
     private void placeBounded(List<Entity> entities, double[] sphereData, int[] byOrder, int csgTrees, Aabb[] out) {
         int n = byOrder.length;
-        if (csgTrees == 0) {
-            if (n > 0) placeRun(sphereData, byOrder, 0, n);
-            return;
-        }
         for (int i = 0; i < n; ) {
-            int j = runEnd(byOrder, i);
+            // Without CSG trees the whole order is one run, found without looking at each entity.
+            int j = csgTrees == 0 ? n : runEnd(byOrder, i);
             if (j > i) {
                 placeRun(sphereData, byOrder, i, j);
                 i = j;
