@@ -8,6 +8,7 @@ import java.nio.file.Path;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
 import java.util.stream.Stream;
+import java.util.zip.ZipFile;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -33,7 +34,7 @@ class LauncherTest {
     @Test
     void twoFirstRunsAtOnceBuildOnceAndBothRun() throws Exception {
         Path repo = Path.of("").toAbsolutePath();
-        for (String part : List.of("pom.xml", "crt", "grammar", "src/main")) copy(repo.resolve(part), clone.resolve(part));
+        for (String part : List.of("pom.xml", "crt", "grammar", "src/main", "src/build")) copy(repo.resolve(part), clone.resolve(part));
         clone.resolve("crt").toFile().setExecutable(true);
         Path script = Files.writeString(clone.resolve("a.crt"), "Scene { Sphere { } }\n");
         Process first = start(script, "1");
@@ -49,6 +50,12 @@ class LauncherTest {
         assertThat(Files.readString(clone.resolve("out2"))).contains("a.crt: ok");
         assertThat(clone.resolve("target/crt.jar")).isRegularFile();
         assertThat(clone.resolve("target/test-classes")).doesNotExist();
+        // The build's last step rewrote picocli's Java 5 class files as Java 8 ones, which the
+        // start-up cache can hold (src/build/UpgradeClassFiles.java).
+        try (ZipFile jar = new ZipFile(clone.resolve("target/crt.jar").toFile())) {
+            byte[] head = jar.getInputStream(jar.getEntry("picocli/CommandLine.class")).readNBytes(8);
+            assertThat((head[6] & 0xff) << 8 | (head[7] & 0xff)).as("picocli's class file version in the jar").isEqualTo(52);
+        }
         // The training render made a start-up cache: one that fails (a training scene the compiler
         // refuses) leaves none, and nothing else says so.
         try (Stream<Path> made = Files.list(clone.resolve("target"))) {
