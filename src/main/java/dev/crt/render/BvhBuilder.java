@@ -237,22 +237,39 @@ final class BvhBuilder {
         for (int i = split - 1; i >= 0; i--) nodeBoxes(links, box, above[i], above[i] + 1, acc);
     }
 
-    /** The boxes of nodes [from, to), each after the nodes after it, so that its children's are known. */
+    /**
+     * The boxes of nodes [from, to), each after the nodes after it, so that its children's are
+     * known. One loop, its body in methods: the JIT compiles a running loop at each loop it finds
+     * hot (on-stack replacement), and the two short loops this had inside it cost two more such
+     * compiles in every large build (docs/benchmarks.md section 41).
+     */
     private void nodeBoxes(int[] links, double[] box, int from, int to, double[] acc) {
         for (int k = to - 1; k >= from; k--) {
-            for (int c = 0; c < 2; c++) {
-                int child = links[2 * k + c];
-                if (Bvh.isLeaf(child)) {
-                    unionOfItems(Bvh.leafFirst(child), Bvh.leafFirst(child) + Bvh.leafCount(child), acc);
-                } else {
-                    unionOfChildren(box, child, acc);
-                }
-                for (int a = 0; a < 3; a++) {
-                    box[Bvh.NODE * k + 2 * a + c] = acc[a];
-                    box[Bvh.NODE * k + Bvh.MAX + 2 * a + c] = acc[3 + a];
-                }
-            }
+            childBox(links[2 * k], box, acc);
+            putChildBox(box, k, 0, acc);
+            childBox(links[2 * k + 1], box, acc);
+            putChildBox(box, k, 1, acc);
         }
+    }
+
+    /** The box of a child (a leaf's items, or an inner node's two children, whose boxes are known) into acc. */
+    private void childBox(int child, double[] box, double[] acc) {
+        if (Bvh.isLeaf(child)) {
+            unionOfItems(Bvh.leafFirst(child), Bvh.leafFirst(child) + Bvh.leafCount(child), acc);
+        } else {
+            unionOfChildren(box, child, acc);
+        }
+    }
+
+    /** Writes acc as the box of child c (0 or 1) of node k. */
+    private static void putChildBox(double[] box, int k, int c, double[] acc) {
+        int o = Bvh.NODE * k + c;
+        box[o] = acc[0];
+        box[o + 2] = acc[1];
+        box[o + 4] = acc[2];
+        box[o + Bvh.MAX] = acc[3];
+        box[o + Bvh.MAX + 2] = acc[4];
+        box[o + Bvh.MAX + 4] = acc[5];
     }
 
     private void unionOfItems(int from, int to, double[] acc) {
@@ -378,15 +395,29 @@ final class BvhBuilder {
         double[] cmin = sc.cmin, cmax = sc.cmax;
         double extent = Math.max(cmax[0] - cmin[0], Math.max(cmax[1] - cmin[1], cmax[2] - cmin[2]));
         double k = extent > 0 ? 1024 / extent : 0;
-        long[] keys = sc.keys;
-        double[] bounds = this.bounds;
+        mortonKeys(lo, hi, cmin, k, sc.keys);
+        reorder(lo, n, sortByCode(sc, n), sc);
+        return mortonSplit(lo, hi, lo, at, sc, level);
+    }
+
+    /**
+     * The sort keys of [lo, hi): each item's Morton code (its centroid on the grid of cubes of
+     * side 1 / k from cmin) above its position in the range. {@link #mortonSubtree}'s passes are
+     * methods of their own: each is compiled once, small, where the JIT compiled the one method
+     * over and over at each of its loops while it ran (docs/benchmarks.md section 41).
+     */
+    private void mortonKeys(int lo, int hi, double[] cmin, double k, long[] keys) {
+        double mx = cmin[0], my = cmin[1], mz = cmin[2];
         for (int i = lo; i < hi; i++) {
-            int x = grid(centroid(i, 0), cmin[0], k), y = grid(centroid(i, 1), cmin[1], k), z = grid(centroid(i, 2), cmin[2], k);
+            int x = grid(centroid(i, 0), mx, k), y = grid(centroid(i, 1), my, k), z = grid(centroid(i, 2), mz, k);
             keys[i - lo] = (long) (spread(x) << 2 | spread(y) << 1 | spread(z)) << 32 | (i - lo);
         }
-        keys = sortByCode(sc, n);
-        int[] orderCopy = sc.orderCopy;
-        double[] boundsCopy = sc.boundsCopy;
+    }
+
+    /** Puts the n items from {@code lo} in the order of the sorted keys (positions in their low 32 bits). */
+    private void reorder(int lo, int n, long[] keys, Scratch sc) {
+        int[] order = this.order, orderCopy = sc.orderCopy;
+        double[] bounds = this.bounds, boundsCopy = sc.boundsCopy;
         for (int j = 0; j < n; j++) {
             int from = lo + (int) keys[j];
             orderCopy[j] = order[from];
@@ -394,7 +425,6 @@ final class BvhBuilder {
         }
         System.arraycopy(orderCopy, 0, order, lo, n);
         System.arraycopy(boundsCopy, 0, bounds, 6 * lo, 6 * n);
-        return mortonSplit(lo, hi, lo, at, sc, level);
     }
 
     /** Bits of the Morton code sorted by each pass of {@link #sortByCode}: three passes over the 30. */
@@ -419,24 +449,29 @@ final class BvhBuilder {
      */
     static long[] sortByCode(long[] keys, long[] spare, int[] digits, int n) {
         long[] from = keys, to = spare;
-        int mask = (1 << MORTON_DIGIT) - 1;
         for (int shift = 32; shift < 62; shift += MORTON_DIGIT) {
-            Arrays.fill(digits, 0);
-            for (int i = 0; i < n; i++) digits[(int) (from[i] >>> shift) & mask]++;
-            for (int d = 0, sum = 0; d <= mask; d++) {
-                int c = digits[d];
-                digits[d] = sum;
-                sum += c;
-            }
-            for (int i = 0; i < n; i++) {
-                long key = from[i];
-                to[digits[(int) (key >>> shift) & mask]++] = key;
-            }
+            radixPass(from, to, digits, n, shift);
             long[] t = from;
             from = to;
             to = t;
         }
         return from;
+    }
+
+    /** One stable pass of {@link #sortByCode}: the first n keys from {@code from} into {@code to} by their ten bits at {@code shift}. */
+    private static void radixPass(long[] from, long[] to, int[] digits, int n, int shift) {
+        int mask = (1 << MORTON_DIGIT) - 1;
+        Arrays.fill(digits, 0);
+        for (int i = 0; i < n; i++) digits[(int) (from[i] >>> shift) & mask]++;
+        for (int d = 0, sum = 0; d <= mask; d++) {
+            int c = digits[d];
+            digits[d] = sum;
+            sum += c;
+        }
+        for (int i = 0; i < n; i++) {
+            long key = from[i];
+            to[digits[(int) (key >>> shift) & mask]++] = key;
+        }
     }
 
     /** The subtree over [a, b) of the range sorted by {@link #mortonSubtree} from {@code lo}. */
@@ -461,9 +496,13 @@ final class BvhBuilder {
         boolean leaf = n == 1;
         if (!leaf && n <= MAX_LEAF) {
             double[] box = sc.box, left = sc.left, right = sc.right;
-            unionOfItems(a, b, box);
             unionOfItems(a, mid, left);
             unionOfItems(mid, b, right);
+            // The range's box is the union of its halves' (minima and maxima are exact).
+            for (int c = 0; c < 3; c++) {
+                box[c] = right[c] < left[c] ? right[c] : left[c];
+                box[3 + c] = right[3 + c] > left[3 + c] ? right[3 + c] : left[3 + c];
+            }
             double parentArea = area(box);
             double splitCost = TRAVERSAL_COST
                     + INTERSECTION_COST * (area(left) * (mid - a) + area(right) * (b - mid)) / parentArea;
