@@ -46,11 +46,11 @@ public final class UpgradeClassFiles {
         Path jar = Path.of(args[0]);
         try {
             Result r = upgrade(jar);
-            System.out.printf("%s: %,d class files older than Java 6 rewritten as Java 8 class files%n",
-                    jar.getFileName(), r.upgraded);
+            System.out.printf("%s: %,d %s older than Java 6 rewritten as Java 8 class files%n",
+                    jar.getFileName(), r.upgraded, r.upgraded == 1 ? "class file" : "class files");
             if (!r.kept.isEmpty()) {
-                System.out.printf("%s: %,d kept as they were (no frames could be computed): %s%n",
-                        jar.getFileName(), r.kept.size(), String.join(", ", r.kept));
+                System.out.printf("%s: %,d kept as %s (no frames could be computed): %s%n",
+                        jar.getFileName(), r.kept.size(), r.kept.size() == 1 ? "it was" : "they were", String.join(", ", r.kept));
             }
         } catch (NoSuchFileException e) {
             System.err.println("UpgradeClassFiles: no such jar: " + jar);

@@ -21,6 +21,10 @@ import java.util.zip.ZipEntry;
 import java.util.zip.ZipFile;
 import java.util.zip.ZipOutputStream;
 import org.junit.jupiter.api.Test;
+import org.objectweb.asm.ClassWriter;
+import org.objectweb.asm.Label;
+import org.objectweb.asm.MethodVisitor;
+import org.objectweb.asm.Opcodes;
 import org.junit.jupiter.api.io.TempDir;
 
 /**
@@ -49,7 +53,7 @@ class UpgradeClassFilesTest {
         Run run = run(jar);
         assertThat(run.exit).as(run.output).isZero();
         assertThat(run.output).contains(String.format("%,d class files older than Java 6 rewritten", old))
-                .doesNotContain("kept as they were");
+                .doesNotContain("kept as");
 
         Map<String, byte[]> after = entries(jar);
         assertThat(after.keySet()).containsExactlyElementsOf(before.keySet());
@@ -69,6 +73,45 @@ class UpgradeClassFilesTest {
         assertThat(again.output).contains(": 0 class files older than Java 6 rewritten");
         Map<String, byte[]> third = entries(jar);
         for (String name : after.keySet()) assertThat(third.get(name)).as(name).isEqualTo(after.get(name));
+    }
+
+    @Test
+    void aClassWithoutComputableFramesIsKeptAndNamed() throws Exception {
+        // A Java 5 class whose method calls a subroutine (jsr/ret, which javac stopped writing
+        // long ago but old compilers wrote): frames cannot describe it, so it stays as it was.
+        ClassWriter old = new ClassWriter(0);
+        old.visit(Opcodes.V1_5, Opcodes.ACC_PUBLIC | Opcodes.ACC_SUPER, "legacy/Subroutine", null, "java/lang/Object", null);
+        MethodVisitor m = old.visitMethod(Opcodes.ACC_PUBLIC | Opcodes.ACC_STATIC, "run", "()I", null, null);
+        m.visitCode();
+        Label sub = new Label();
+        m.visitJumpInsn(Opcodes.JSR, sub);
+        m.visitInsn(Opcodes.ICONST_1);
+        m.visitInsn(Opcodes.IRETURN);
+        m.visitLabel(sub);
+        m.visitVarInsn(Opcodes.ASTORE, 0);
+        m.visitVarInsn(Opcodes.RET, 0);
+        m.visitMaxs(1, 1);
+        m.visitEnd();
+        old.visitEnd();
+        byte[] legacy = old.toByteArray();
+        Path jar = dir.resolve("mixed.jar");
+        try (ZipOutputStream out = new ZipOutputStream(Files.newOutputStream(jar))) {
+            out.putNextEntry(new ZipEntry("legacy/Subroutine.class"));
+            out.write(legacy);
+            out.closeEntry();
+            out.putNextEntry(new ZipEntry("picocli/CommandLine$Range.class"));
+            try (InputStream in = picocli.CommandLine.class.getResourceAsStream("CommandLine$Range.class")) {
+                in.transferTo(out);
+            }
+            out.closeEntry();
+        }
+        Run run = run(jar);
+        assertThat(run.exit).as(run.output).isZero();
+        assertThat(run.output).contains(": 1 class file older than Java 6 rewritten")
+                .contains("1 kept as it was").contains("legacy/Subroutine.class");
+        Map<String, byte[]> after = entries(jar);
+        assertThat(after.get("legacy/Subroutine.class")).isEqualTo(legacy);
+        assertThat(major(after.get("picocli/CommandLine$Range.class"))).isEqualTo(52);
     }
 
     @Test
