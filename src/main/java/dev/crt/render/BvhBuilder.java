@@ -403,8 +403,8 @@ final class BvhBuilder {
     /**
      * The sort keys of [lo, hi): each item's Morton code (its centroid on the grid of cubes of
      * side 1 / k from cmin) above its position in the range. {@link #mortonSubtree}'s passes are
-     * methods of their own: each is compiled once, small, where the JIT compiled the one method
-     * over and over at each of its loops while it ran (docs/benchmarks.md section 41).
+     * small methods of their own, which the JIT compiles quickly, where it compiled the one large
+     * method again at each of its loops while it ran (docs/benchmarks.md section 41).
      */
     private void mortonKeys(int lo, int hi, double[] cmin, double k, long[] keys) {
         double mx = cmin[0], my = cmin[1], mz = cmin[2];
