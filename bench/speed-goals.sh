@@ -1,0 +1,114 @@
+#!/usr/bin/env bash
+# Every speed goal of issue 10 in one run, with the machine's speed measured beside them: a fixed
+# awk loop before and after (on this kind of shared machine the speed moves by up to 2x within
+# minutes, and every figure here moves with it; docs/benchmarks.md sections 34 to 41).
+#
+#   bench/speed-goals.sh [--runs N] [--base F05ACBF.jar] [--drops DROPS.crt --assets DIR]
+#
+# Always: goal 2 (bench/povray-compare.sh, N runs, on the box field and on 10,000 spheres made by
+# a loop and written out; bench/compile-speed.sh) and goal 3 (N runs of crt render on 1e6 spheres:
+# the "compile" and "bvh build" phases as --stats prints them). With --base, the jar of f05acbf:
+# goal 4 (bench/SideBySide.java, 10,000 spheres at 2560x1440, one render thread, 3 rounds). With
+# --drops and --assets too (drops.crt of CRT 2015 and its assets folder, data files, never
+# committed): goal 1, drops.crt at its shipped 800x600 side by side, 3 rounds (about 12 minutes).
+# N defaults to 5. Goal 3's heap per sphere is measured by bench/bvh-build.sh --scenes.
+# Prints one line per figure with the goal and whether it is met, then the table of them all.
+set -euo pipefail
+
+here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
+root="$(cd "$here/.." && pwd)"
+runs=5
+base=""
+drops=""
+assets=""
+usage() { sed -n '2,14p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'; }
+while [ $# -gt 0 ]; do
+  case "$1" in
+    --runs) runs="$2"; shift 2 ;;
+    --base) base="$2"; shift 2 ;;
+    --drops) drops="$2"; shift 2 ;;
+    --assets) assets="$2"; shift 2 ;;
+    -h|--help) usage; exit 0 ;;
+    *) echo "speed-goals: unknown option '$1'" >&2; usage >&2; exit 2 ;;
+  esac
+done
+if [ -n "$base" ] && [ ! -f "$base" ]; then echo "speed-goals: no such jar: $base" >&2; exit 3; fi
+if [ -n "$drops" ] && { [ -z "$base" ] || [ ! -f "$drops" ] || [ ! -d "$assets" ]; }; then
+  echo "speed-goals: goal 1 needs --base, --drops (an existing drops.crt) and --assets (its assets folder)" >&2
+  exit 2
+fi
+
+work="$(mktemp -d)"
+trap 'rm -rf "$work"' EXIT
+"$root/crt" --version >/dev/null   # builds target/crt.jar and its start-up cache when needed
+
+# The machine's speed: seconds for a fixed loop of 20 million additions in awk.
+calibrate() {
+  local s e
+  s=$(date +%s%N)
+  awk 'BEGIN { s = 0; for (i = 0; i < 20000000; i++) s += i; if (s < 0) print s }'
+  e=$(date +%s%N)
+  awk -v ns=$((e - s)) 'BEGIN { printf "%.2f", ns / 1e9 }'
+}
+
+table=()
+record() { # goal, figure, goal text, met (yes/no)
+  table+=("$(printf '| %s | %s | %s | %s |' "$1" "$2" "$3" "$4")")
+  echo "$1: $2 ($3: $4)"
+}
+met() { awk -v x="$1" -v op="$2" -v y="$3" 'BEGIN { ok = (op == "<=") ? x <= y : (op == "<") ? x < y : x >= y; print ok ? "met" : "NOT met" }'; }
+
+echo "$(date -u '+%Y-%m-%d %H:%M UTC'), load $(cut -d' ' -f1-3 /proc/loadavg), $(nproc) cores"
+echo "java: $("$root/crt" --version | sed -n 2p)"
+before=$(calibrate)
+echo "machine speed: the awk loop took $before s (before)"
+echo
+
+# --- goal 2 -------------------------------------------------------------------------------------
+for scene in box-field spheres spheres-written; do
+  if [ "$scene" = box-field ]; then args=(); else args=(--scene "$scene"); fi
+  "$here/povray-compare.sh" ${args[@]+"${args[@]}"} --runs "$runs" >"$work/pov-$scene.txt" 2>&1 \
+    || { cat "$work/pov-$scene.txt" >&2; exit 1; }
+  r=$(awk -F': ' '/^ratio CRT/ {print $2}' "$work/pov-$scene.txt")
+  render=$(awk -F': ' '/^render phase alone/ {print $2}' "$work/pov-$scene.txt")
+  record "2: whole process against POV-Ray, $scene" "$r (render phase alone $render)" "at most 1" "$(met "$r" "<=" 1)"
+done
+"$here/compile-speed.sh" --runs "$runs" >"$work/compile.txt" 2>&1 || { cat "$work/compile.txt" >&2; exit 1; }
+mbs=$(awk '/^compile \(median/ {for (i = 1; i <= NF; i++) if ($i == "MB/s") print $(i - 1)}' "$work/compile.txt")
+record "2: compile a written-out script" "$mbs MB/s" "at least 10 MB/s" "$(met "$mbs" ">=" 10)"
+
+# --- goal 3 -------------------------------------------------------------------------------------
+compiles=()
+builds=()
+for ((i = 1; i <= runs; i++)); do
+  "$root/crt" render "$here/scenes/spheres.crt" --time 1000000 --time-budget 600 --width 16 --height 16 \
+    --stats -o "$work/spheres.png" >"$work/goal3.txt" 2>&1 || { cat "$work/goal3.txt" >&2; exit 1; }
+  compiles+=("$(awk '$1 == "compile" && $3 == "s" {print $2}' "$work/goal3.txt")")
+  builds+=("$(awk '$1 == "bvh" && $2 == "build" {print $3}' "$work/goal3.txt")")
+done
+worst() { printf '%s\n' "$@" | sort -g | tail -1; }
+record "3: 1e6 spheres, bvh build phase" "${builds[*]} s (slowest $(worst "${builds[@]}"))" "under 1 s" "$(met "$(worst "${builds[@]}")" "<" 1)"
+record "3: 1e6 spheres, compile phase" "${compiles[*]} s (slowest $(worst "${compiles[@]}"))" "under 1.5 s" "$(met "$(worst "${compiles[@]}")" "<" 1.5)"
+
+# --- goals 4 and 1 (need f05acbf's jar) ---------------------------------------------------------
+if [ -n "$base" ]; then
+  java "$here/SideBySide.java" "$base" "$root/target/crt.jar" "$here/scenes/spheres.crt" 2560 1440 3 >"$work/goal4.txt" 2>&1 \
+    || { cat "$work/goal4.txt" >&2; exit 1; }
+  q=$(awk '/new\/base/ {print $NF}' "$work/goal4.txt")
+  x=$(awk -v q="$q" 'BEGIN { printf "%.2f", 1 / q }')
+  record "4: rays per second per core against f05acbf, 10,000 spheres 2560x1440" "${x}x (CPU ratio $q)" "at least 2x" "$(met "$x" ">=" 2)"
+fi
+if [ -n "$drops" ]; then
+  java -Dcrt.assets="$assets" "$here/SideBySide.java" "$base" "$root/target/crt.jar" "$drops" 800 600 3 grid >"$work/goal1.txt" 2>&1 \
+    || { cat "$work/goal1.txt" >&2; exit 1; }
+  q=$(awk '/new\/base/ {print $NF}' "$work/goal1.txt")
+  record "1: drops.crt at 800x600 against f05acbf, side by side" "$q of its time" "at most 0.4" "$(met "$q" "<=" 0.4)"
+fi
+
+after=$(calibrate)
+echo
+echo "machine speed: the awk loop took $before s before and $after s after"
+echo
+echo "| goal | now | the goal | |"
+echo "|---|---|---|---|"
+printf '%s\n' "${table[@]}"
