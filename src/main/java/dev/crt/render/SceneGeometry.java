@@ -94,7 +94,7 @@ final class SceneGeometry {
         items = new int[n];
         // The entity at each traversal position, written over its number among the bounded ones.
         if (entity != null) renumber(order, entity);
-        placeBounded(entities, sphereData, order, csgTrees, out);
+        placeBounded(entities, sphereData, order, csgTrees, slow == 0, out);
         unbounded = new int[outside.size()];
         for (int i = 0; i < unbounded.length; i++) {
             int index = outside.get(i);
@@ -169,13 +169,13 @@ final class SceneGeometry {
      * The second pass over the bounded entities, in traversal order: runs of primitives placed
      * by {@link #placeRun}, CSG trees one by one on this thread.
      */
-    private void placeBounded(List<Entity> entities, double[] sphereData, int[] byOrder, int csgTrees, Aabb[] out) {
+    private void placeBounded(List<Entity> entities, double[] sphereData, int[] byOrder, int csgTrees, boolean allSpheres, Aabb[] out) {
         int n = byOrder.length;
         for (int i = 0; i < n; ) {
             // Without CSG trees the whole order is one run, found without looking at each entity.
             int j = csgTrees == 0 ? n : runEnd(byOrder, i);
             if (j > i) {
-                placeRun(sphereData, byOrder, i, j);
+                placeRun(sphereData, byOrder, i, j, allSpheres);
                 i = j;
             } else {
                 int index = byOrder[i];
@@ -284,27 +284,19 @@ final class SceneGeometry {
      * shapes, items and owners, in chunks on every core: each chunk measures its data, then
      * writes it from where the chunks before it end (the same layout in any chunking). Plain
      * spheres are copied from their data in {@code sphereData}, the others from the first pass.
+     * When every entity is a plain sphere ({@code allSpheres}), each takes {@link SphereShape#SIZE}
+     * and the chunks' starts are known without the measuring pass.
      */
-    private void placeRun(double[] sphereData, int[] byOrder, int i, int j) {
+    private void placeRun(double[] sphereData, int[] byOrder, int i, int j, boolean allSpheres) {
         int n = j - i, first = shapes.count();
         int chunks = Parallel.chunks(n);
         long[] before = new long[chunks + 1];
-        int[] what = this.what, offsetFrom = others.offset;
-        int last = others.count() - 1, lastEnd = others.dataSize();
-        Parallel.forChunks(n, chunks, (chunk, a, b) -> {
-            long length = 0;
-            for (int k = i + a; k < i + b; k++) {
-                int w = what[byOrder[k]];
-                if (w >= 0) {
-                    length += SphereShape.SIZE;
-                } else {
-                    int s = -w - 3;
-                    length += (s < last ? offsetFrom[s + 1] : lastEnd) - offsetFrom[s];
-                }
-            }
-            before[chunk + 1] = length;
-        });
-        for (int c = 0; c < chunks; c++) before[c + 1] += before[c];
+        if (allSpheres) {
+            for (int c = 0; c <= chunks; c++) before[c] = (long) SphereShape.SIZE * Parallel.start(n, chunks, c);
+        } else {
+            runLengths(byOrder, i, n, chunks, before);
+        }
+        int[] what = this.what;
         int base = shapes.dataSize();
         if (base + before[chunks] > Integer.MAX_VALUE - 16) throw new OutOfMemoryError("scene data too large");
         shapes.claim(n, (int) before[chunks]);
@@ -325,6 +317,26 @@ final class SceneGeometry {
             }
         });
         if (others.meshes.length > 0) shapes.reindexMeshes(others, first, first + n);
+    }
+
+    /** Where each chunk of the run's n positions from {@code i} starts in the shapes' data, relative to the run's start, into {@code before}. */
+    private void runLengths(int[] byOrder, int i, int n, int chunks, long[] before) {
+        int[] what = this.what, offsetFrom = others.offset;
+        int last = others.count() - 1, lastEnd = others.dataSize();
+        Parallel.forChunks(n, chunks, (chunk, a, b) -> {
+            long length = 0;
+            for (int k = i + a; k < i + b; k++) {
+                int w = what[byOrder[k]];
+                if (w >= 0) {
+                    length += SphereShape.SIZE;
+                } else {
+                    int s = -w - 3;
+                    length += (s < last ? offsetFrom[s + 1] : lastEnd) - offsetFrom[s];
+                }
+            }
+            before[chunk + 1] = length;
+        });
+        for (int c = 0; c < chunks; c++) before[c + 1] += before[c];
     }
 
     /** Flattens entity number {@code index} of the scene; the shapes it adds are recorded as its own. */
