@@ -94,7 +94,7 @@ final class SceneGeometry {
         items = new int[n];
         // The entity at each traversal position, written over its number among the bounded ones.
         if (entity != null) renumber(order, entity);
-        placeBounded(entities, sphereData, order, csgTrees, slow == 0, out);
+        placeBounded(entities, sphereData, order, csgTrees, out);
         unbounded = new int[outside.size()];
         for (int i = 0; i < unbounded.length; i++) {
             int index = outside.get(i);
@@ -169,13 +169,13 @@ final class SceneGeometry {
      * The second pass over the bounded entities, in traversal order: runs of primitives placed
      * by {@link #placeRun}, CSG trees one by one on this thread.
      */
-    private void placeBounded(List<Entity> entities, double[] sphereData, int[] byOrder, int csgTrees, boolean allSpheres, Aabb[] out) {
+    private void placeBounded(List<Entity> entities, double[] sphereData, int[] byOrder, int csgTrees, Aabb[] out) {
         int n = byOrder.length;
         for (int i = 0; i < n; ) {
             // Without CSG trees the whole order is one run, found without looking at each entity.
             int j = csgTrees == 0 ? n : runEnd(byOrder, i);
             if (j > i) {
-                placeRun(sphereData, byOrder, i, j, allSpheres);
+                placeRun(sphereData, byOrder, i, j);
                 i = j;
             } else {
                 int index = byOrder[i];
@@ -284,14 +284,15 @@ final class SceneGeometry {
      * shapes, items and owners, in chunks on every core: each chunk measures its data, then
      * writes it from where the chunks before it end (the same layout in any chunking). Plain
      * spheres are copied from their data in {@code sphereData}, the others from the first pass.
-     * When every entity is a plain sphere ({@code allSpheres}), each takes {@link SphereShape#SIZE}
-     * and the chunks' starts are known without the measuring pass.
+     * When the first pass flattened nothing into {@link #others}, every primitive is a plain
+     * sphere of {@link SphereShape#SIZE} numbers, and the chunks' starts are known without the
+     * measuring pass.
      */
-    private void placeRun(double[] sphereData, int[] byOrder, int i, int j, boolean allSpheres) {
+    private void placeRun(double[] sphereData, int[] byOrder, int i, int j) {
         int n = j - i, first = shapes.count();
         int chunks = Parallel.chunks(n);
         long[] before = new long[chunks + 1];
-        if (allSpheres) {
+        if (others.count() == 0) {
             for (int c = 0; c <= chunks; c++) before[c] = (long) SphereShape.SIZE * Parallel.start(n, chunks, c);
         } else {
             runLengths(byOrder, i, n, chunks, before);

@@ -475,11 +475,7 @@ public final class Evaluator extends CRTBaseVisitor<Value> {
         if (name.equals("t")) {
             throw error("cannot assign to 't': it is the animation time, set from the command line", span(ctx.IDENT().getSymbol()));
         }
-        return assign(ctx, visit(ctx.getChild(2)));
-    }
-
-    private Value assign(CRTParser.AssignmentContext ctx, Value value) {
-        return assign(ctx, ctx.IDENT().getText(), value);
+        return assign(ctx, ctx.IDENT().getText(), visit(ctx.getChild(2)));
     }
 
     private Value assign(CRTParser.AssignmentContext ctx, String name, Value value) {
@@ -596,11 +592,7 @@ public final class Evaluator extends CRTBaseVisitor<Value> {
 
     @Override
     public Value visitMultiplicative(CRTParser.MultiplicativeContext ctx) {
-        return multiply(ctx, visit(ctx.getChild(0)), visit(ctx.getChild(2)));
-    }
-
-    private Value multiply(CRTParser.MultiplicativeContext ctx, Value a, Value b) {
-        return Arithmetic.multiplicative(ctx.op.getText(), a, b, ctx, this);
+        return Arithmetic.multiplicative(ctx.op.getText(), visit(ctx.getChild(0)), visit(ctx.getChild(2)), ctx, this);
     }
 
     @Override
