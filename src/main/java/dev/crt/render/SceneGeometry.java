@@ -2,7 +2,6 @@ package dev.crt.render;
 
 import dev.crt.geom.Aabb;
 import dev.crt.geom.Transform;
-import dev.crt.geom.Vec3;
 import dev.crt.scene.Csg;
 import dev.crt.scene.Entity;
 import dev.crt.scene.Material;
@@ -231,8 +230,8 @@ final class SceneGeometry {
         int[] what = this.what;
         for (int index = from; index < to; index++) {
             if (entities.get(index) instanceof Sphere sp && sp.transform() == Transform.IDENTITY && sp.radius() > 0
-                    && sphereBounds(sp.center(), sp.radius(), flat, index)) {
-                SphereShape.write(sphereData, SphereShape.SIZE * index, sp.center(), sp.radius());
+                    && sphereBounds(sp, flat, index)) {
+                SphereShape.write(sphereData, SphereShape.SIZE * index, sp.x(), sp.y(), sp.z(), sp.radius());
                 what[index] = found.indexOf(sp.material());
             } else {
                 what[index] = OUTSIDE;
@@ -266,12 +265,12 @@ final class SceneGeometry {
     }
 
     /**
-     * Writes the bounds of a sphere about {@code c} of radius {@code r} as item {@code i} of a flat
-     * bounds array, with the arithmetic of {@link SphereShape#bounds} and {@link BvhBuilder#put};
-     * returns false, writing nothing, when they are not finite.
+     * Writes the bounds of an untransformed sphere as item {@code i} of a flat bounds array, with
+     * the arithmetic of {@link SphereShape#bounds} and {@link BvhBuilder#put}; returns false,
+     * writing nothing, when they are not finite.
      */
-    private static boolean sphereBounds(Vec3 c, double r, double[] flat, int i) {
-        double x = c.x(), y = c.y(), z = c.z();
+    private static boolean sphereBounds(Sphere sp, double[] flat, int i) {
+        double x = sp.x(), y = sp.y(), z = sp.z(), r = sp.radius();
         double x0 = x - r, y0 = y - r, z0 = z - r, x1 = x + r, y1 = y + r, z1 = z + r;
         if (!(Double.isFinite(x0) && Double.isFinite(y0) && Double.isFinite(z0)
                 && Double.isFinite(x1) && Double.isFinite(y1) && Double.isFinite(z1))) return false;

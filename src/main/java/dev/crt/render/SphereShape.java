@@ -16,11 +16,11 @@ final class SphereShape {
 
     private SphereShape() {}
 
-    /** Writes the data of an untransformed sphere about {@code c} of radius {@code r} &gt; 0 at {@code at}, as {@link #add} pushes it. */
-    static void write(double[] data, int at, Vec3 c, double r) {
-        data[at] = c.x();
-        data[at + 1] = c.y();
-        data[at + 2] = c.z();
+    /** Writes the data of an untransformed sphere about (x, y, z) of radius {@code r} &gt; 0 at {@code at}, as {@link #add} pushes it. */
+    static void write(double[] data, int at, double x, double y, double z, double r) {
+        data[at] = x;
+        data[at + 1] = y;
+        data[at + 2] = z;
         data[at + 3] = r;
         data[at + 4] = r * r;
     }
