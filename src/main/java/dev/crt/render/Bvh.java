@@ -10,7 +10,8 @@ package dev.crt.render;
  * on Java 17: the conversions cost more than the cache misses they save). Its children are
  * {@code children[2n]} and {@code children[2n + 1]}. A child ≥ 0 is an inner node; a child &lt; 0
  * is a leaf {@code ~(first << 3 | count)} holding items first … first + count − 1 in the item
- * order the builder chose. The root (node 0) is always an inner node.
+ * order the builder chose. The root (node 0) is always an inner node. A large tree may leave a
+ * few node numbers unused ({@link BvhBuilder#GAPS_KEPT}): no child names them.
  */
 final class Bvh {
     static final int LEAF_COUNT_BITS = 3;

@@ -26,8 +26,12 @@ class BvhBuilderTest {
         return b;
     }
 
-    private static void check(int n) {
-        double[] boxes = randomBoxes(n, n);
+    private static Bvh check(int n) {
+        return check(randomBoxes(n, n), n);
+    }
+
+    /** Builds the hierarchy over {@code boxes} and checks it; returns it. */
+    private static Bvh check(double[] boxes, int n) {
         int[] order = new int[n];
         Bvh bvh = BvhBuilder.build(boxes.clone(), n, order);
         int[] seen = new int[n];
@@ -38,6 +42,7 @@ class BvhBuilderTest {
         for (int i = 0; i < n; i++) assertThat(seen[i]).as("item %d", i).isEqualTo(1);
         assertThat(leaves).isGreaterThan(0);
         assertThat(bvh.nodeCount).isEqualTo(2 * leaves - 1).isLessThan(2 * n);
+        return bvh;
     }
 
     /**
@@ -103,7 +108,17 @@ class BvhBuilderTest {
 
     @Test
     void buildFinishedInMortonOrderHoldsEveryItemOnce() {
-        check(BvhBuilder.MORTON_ABOVE + 1);
+        // A seventh of these boxes coincide, and leaves of four hold them: numbered densely.
+        int n = BvhBuilder.MORTON_ABOVE + 1;
+        Bvh clustered = check(n);
+        assertThat(clustered.children).hasSize(clustered.nodeCount - 1);
+        assertThat(clustered.box).hasSize(Bvh.NODE * (clustered.nodeCount - 1) / 2);
+        // Random spheres, whose leaves hold one item nearly all: the tree keeps its build slots
+        // as node numbers, the gaps among them unused (BvhBuilder.GAPS_KEPT).
+        Bvh spheres = check(BvhBuilderSameTreeTest.boxes(0, n, 5), n);
+        assertThat(spheres.children).hasSize(2 * (n - 1));
+        assertThat(spheres.box).hasSize(Bvh.NODE * (n - 1));
+        assertThat(spheres.nodeCount).isLessThan(2 * n - 1);
     }
 
     @Test
@@ -122,14 +137,16 @@ class BvhBuilderTest {
 
     /** The tree's expected cost (traversal 1, intersection 1.5 per item) relative to its root box. */
     private static double sah(Bvh bvh) {
-        double rootArea = area(bvh.root);
-        double cost = 1;
-        for (int node = 0; node < (bvh.nodeCount - 1) / 2; node++) {
-            for (int c = 0; c < 2; c++) {
-                double a = area(child(bvh, node, c)) / rootArea;
-                int next = bvh.children[2 * node + c];
-                cost += Bvh.isLeaf(next) ? 1.5 * Bvh.leafCount(next) * a : a;
-            }
+        return 1 + sah(bvh, 0, area(bvh.root));
+    }
+
+    /** The cost of the children of inner node {@code node} and of everything below them. */
+    private static double sah(Bvh bvh, int node, double rootArea) {
+        double cost = 0;
+        for (int c = 0; c < 2; c++) {
+            double a = area(child(bvh, node, c)) / rootArea;
+            int next = bvh.children[2 * node + c];
+            cost += Bvh.isLeaf(next) ? 1.5 * Bvh.leafCount(next) * a : a + sah(bvh, next, rootArea);
         }
         return cost;
     }
