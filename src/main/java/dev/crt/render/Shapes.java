@@ -239,7 +239,11 @@ final class Shapes {
     }
 
     static double maxAbs(Vec3 v) {
-        return Math.max(Math.abs(v.x()), Math.max(Math.abs(v.y()), Math.abs(v.z())));
+        return maxAbs(v.x(), v.y(), v.z());
+    }
+
+    static double maxAbs(double x, double y, double z) {
+        return Math.max(Math.abs(x), Math.max(Math.abs(y), Math.abs(z)));
     }
 
     /** Whether shape {@code s} is a plane (one-sided in the 2015 shading model). */

@@ -42,8 +42,7 @@ final class SphereShape {
         d[at + 2] = z;
         d[at + 3] = r;
         d[at + 4] = source[from + 4];
-        // Shapes.maxAbs(centre) + r
-        out.scale[s] = Math.max(Math.abs(x), Math.max(Math.abs(y), Math.abs(z))) + r;
+        out.scale[s] = Shapes.maxAbs(x, y, z) + r;
     }
 
     static void add(Shapes out, int s, Sphere sp, Transform t) {
@@ -52,11 +51,10 @@ final class SphereShape {
             return;
         }
         if (t == Transform.IDENTITY) {
-            Vec3 c = sp.center();
-            double r = sp.radius();
+            double x = sp.x(), y = sp.y(), z = sp.z(), r = sp.radius();
             out.kind[s] = Shapes.SPHERE;
-            out.push(c.x(), c.y(), c.z(), r, r * r);
-            out.scale[s] = Shapes.maxAbs(c) + r;
+            out.push(x, y, z, r, r * r);
+            out.scale[s] = Shapes.maxAbs(x, y, z) + r;
             return;
         }
         double[] m = t.matrix();
