@@ -13,6 +13,12 @@ import java.util.*;
  * {@code --sampler} would be: {@code grid} makes a build with samplers draw the same picture as a
  * build from before them (f05acbf) on a scene with a lens, where its default differs. Each build
  * renders as {@code crt render} does for a PNG file (see {@link #forPng}).
+ *
+ * <p>Prints each round as it ends (both builds' seconds and their ratio), then the ratio of the
+ * medians and the median of the rounds' ratios. A render of drops.crt at 800 x 600 takes half a
+ * minute to a minute and a half, and this machine's speed moves by up to half within minutes: the
+ * two renders of one round run a minute apart, the medians of the run ten minutes apart, so the
+ * rounds' own ratios are the steadier measure when the machine's speed moves.
  */
 public class SideBySide {
     public static void main(String[] a) throws Exception {
@@ -41,17 +47,25 @@ public class SideBySide {
         }
         var os = (com.sun.management.OperatingSystemMXBean) ManagementFactory.getOperatingSystemMXBean();
         List<List<Double>> cpu = List.of(new ArrayList<>(), new ArrayList<>());
+        List<Double> ratios = new ArrayList<>();
         for (int r = -2; r < rounds; r++) {
+            double[] round = new double[2];
             for (int k0 = 0; k0 < 2; k0++) {
                 int k = (r & 1) == 0 ? k0 : 1 - k0;
                 long c0 = os.getProcessCpuTime();
                 render[k].invoke(renderers[k], 1, none[k]);
-                double c = (os.getProcessCpuTime() - c0) / 1e9;
-                if (r >= 0) cpu.get(k).add(c);
+                round[k] = (os.getProcessCpuTime() - c0) / 1e9;
+                if (r >= 0) cpu.get(k).add(round[k]);
+            }
+            if (r >= 0) {
+                ratios.add(round[1] / round[0]);
+                System.out.printf("round %d: base %.2f s, new %.2f s, new/base %.4f%n", r + 1, round[0], round[1], round[1] / round[0]);
             }
         }
         for (int k = 0; k < 2; k++) Collections.sort(cpu.get(k));
+        Collections.sort(ratios);
         double m0 = cpu.get(0).get(rounds / 2), m1 = cpu.get(1).get(rounds / 2);
+        System.out.printf("median of the rounds' ratios %.4f%n", ratios.get(rounds / 2));
         System.out.printf("base median CPU %.3f s, new median CPU %.3f s, new/base %.4f%n", m0, m1, m1 / m0);
         System.out.println("base " + cpu.get(0));
         System.out.println("new  " + cpu.get(1));
