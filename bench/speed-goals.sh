@@ -2,7 +2,7 @@
 # Every speed goal of issue 10 in one run, with the machine's speed measured beside them: a fixed
 # awk loop before and after, alone and on every core at once (on this kind of shared machine the
 # speed moves by up to 2x within minutes and a core may be half taken, and every figure here
-# moves with it; docs/benchmarks.md sections 34 to 42).
+# moves with it; docs/benchmarks.md sections 34 to 43).
 #
 #   bench/speed-goals.sh [--runs N] [--base F05ACBF.jar] [--drops DROPS.crt --assets DIR] [--side-java JAVA]
 #
@@ -37,6 +37,7 @@ while [ $# -gt 0 ]; do
   esac
 done
 if [ -n "$base" ] && [ ! -f "$base" ]; then echo "speed-goals: no such jar: $base" >&2; exit 3; fi
+if ! command -v "$side_java" >/dev/null 2>&1; then echo "speed-goals: no such java: $side_java" >&2; exit 3; fi
 if [ -n "$drops" ] && { [ -z "$base" ] || [ ! -f "$drops" ] || [ ! -d "$assets" ]; }; then
   echo "speed-goals: goal 1 needs --base, --drops (an existing drops.crt) and --assets (its assets folder)" >&2
   exit 2
