@@ -106,21 +106,29 @@ record "3: 1e6 spheres, bvh build phase" "${builds[*]} s (slowest $(worst "${bui
 record "3: 1e6 spheres, compile phase" "${compiles[*]} s (slowest $(worst "${compiles[@]}"))" "under 1.5 s" "$(met "$(worst "${compiles[@]}")" "<" 1.5)"
 
 # --- goals 4 and 1 (need f05acbf's jar) ---------------------------------------------------------
+# side GOAL [JVM options] -- SCENE W H [SAMPLER]: f05acbf and this build side by side in one JVM
+# (3 rounds); prints the rounds and sets q (the ratio of the medians) and qr (the median of the
+# rounds' ratios).
+side() {
+  local goal="$1" opts=()
+  shift
+  while [ "$1" != -- ]; do opts+=("$1"); shift; done
+  shift
+  local scene="$1" out="$work/goal$goal.txt"
+  shift
+  "$side_java" ${opts[@]+"${opts[@]}"} "$here/SideBySide.java" "$base" "$root/target/crt.jar" "$scene" "$1" "$2" 3 "${@:3}" \
+    >"$out" 2>&1 || { cat "$out" >&2; exit 1; }
+  sed -n "s/^round/  goal $goal, round/p" "$out"
+  q=$(awk '/^base median CPU/ {print $NF}' "$out")
+  qr=$(awk '/rounds. ratios/ {print $NF}' "$out")
+}
 if [ -n "$base" ]; then
-  "$side_java" "$here/SideBySide.java" "$base" "$root/target/crt.jar" "$here/scenes/spheres.crt" 2560 1440 3 >"$work/goal4.txt" 2>&1 \
-    || { cat "$work/goal4.txt" >&2; exit 1; }
-  sed -n 's/^round/  goal 4, round/p' "$work/goal4.txt"
-  q=$(awk '/^base median CPU/ {print $NF}' "$work/goal4.txt")
-  qr=$(awk '/rounds. ratios/ {print $NF}' "$work/goal4.txt")
+  side 4 -- "$here/scenes/spheres.crt" 2560 1440
   x=$(awk -v q="$q" 'BEGIN { printf "%.2f", 1 / q }')
   record "4: rays per second per core against f05acbf, 10,000 spheres 2560x1440" "${x}x (CPU ratio $q; median of the rounds' ratios $qr)" "at least 2x" "$(met "$x" ">=" 2)"
 fi
 if [ -n "$drops" ]; then
-  "$side_java" -Dcrt.assets="$assets" "$here/SideBySide.java" "$base" "$root/target/crt.jar" "$drops" 800 600 3 grid >"$work/goal1.txt" 2>&1 \
-    || { cat "$work/goal1.txt" >&2; exit 1; }
-  sed -n 's/^round/  goal 1, round/p' "$work/goal1.txt"
-  q=$(awk '/^base median CPU/ {print $NF}' "$work/goal1.txt")
-  qr=$(awk '/rounds. ratios/ {print $NF}' "$work/goal1.txt")
+  side 1 -Dcrt.assets="$assets" -- "$drops" 800 600 grid
   record "1: drops.crt at 800x600 against f05acbf, side by side" "$q of its time (median of the rounds' ratios $qr)" "at most 0.4" "$(met "$q" "<=" 0.4)"
 fi
 
