@@ -609,6 +609,7 @@ final class CsgSolids {
         double tol = TIE * (o + scale[tree]);
         double[] eventT = sc.eventT;
         int[] eventLeaf = sc.eventLeaf;
+        if (hit == null && blocks(tree, op, eventT, eventLeaf, n, in0, in1, tMax, tol, shapes, materials)) return 0;
         int[] order = sort(eventT, n, sc.order, sc.merge);
         boolean known = false, state = false;
         double product = 1;
@@ -648,6 +649,42 @@ final class CsgSolids {
             i = j;
         }
         return hit == null ? product : 0;
+    }
+
+    /**
+     * For {@link #walkPair}'s shadow rays, without sorting: whether one of the {@code n} events
+     * (unsorted) lies in (0, tMax) alone, farther from every other event than the walk's grouping
+     * reaches either way, on an opaque leaf, where the solid's inside changes (the other leaf's
+     * state there, counted from {@code in0}/{@code in1} at −∞ over its earlier events, decides it).
+     * The walk then returns 0 at that event if not at an earlier one, so 0 is its answer; when
+     * this finds no such event the walk answers. A shadow ray blocked by a bowl cut from a ball
+     * takes this way (drops.crt: seven in eight of the pair walks of its shadow rays).
+     */
+    private boolean blocks(int tree, int op, double[] eventT, int[] eventLeaf, int n, boolean in0, boolean in1, double tMax,
+            double tol, Shapes shapes, Materials materials) {
+        for (int e = 0; e < n; e++) {
+            double t = eventT[e];
+            if (!(t > 0 && t < tMax)) continue;
+            int leaf = eventLeaf[e];
+            // The other leaf's state just before t, and whether any event is close enough to t to
+            // share its group (the walk's grouping: t′ ≤ t0 + tol + TIE·|t0| from a group's first t0).
+            boolean other = leaf == 0 ? in1 : in0, alone = true;
+            double limit = t + tol + TIE * Math.abs(t);
+            for (int f = 0; f < n; f++) {
+                if (f == e) continue;
+                double u = eventT[f];
+                if (!(u > limit || t > u + tol + TIE * Math.abs(u))) {
+                    alone = false;
+                    break;
+                }
+                if (eventLeaf[f] != leaf && u < t) other = !other;
+            }
+            if (!alone) continue;
+            // Flipping the first operand changes the inside unless the second decides it, and back.
+            boolean changes = leaf == 0 ? (op == INTERSECTION) == other : (op == UNION) != other;
+            if (changes && materials.transparency(shapes.material[leafShape[leafStart[tree] + leaf]]) == 0) return true;
+        }
+        return false;
     }
 
     private static boolean inside(int op, boolean a, boolean b) {
