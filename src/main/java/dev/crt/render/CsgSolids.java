@@ -680,7 +680,9 @@ final class CsgSolids {
                 if (eventLeaf[f] != leaf && u < t) other = !other;
             }
             if (!alone) continue;
-            // Flipping the first operand changes the inside unless the second decides it, and back.
+            // Whether this flip shows: the first operand's through a difference or a union only while
+            // the second is out, through an intersection only while it is in; the second's through
+            // a difference or an intersection only while the first is in, through a union only while it is out.
             boolean changes = leaf == 0 ? (op == INTERSECTION) == other : (op == UNION) != other;
             if (changes && materials.transparency(shapes.material[leafShape[leafStart[tree] + leaf]]) == 0) return true;
         }
