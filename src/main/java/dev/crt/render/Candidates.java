@@ -531,8 +531,8 @@ final class Candidates {
         }
         // A reflected-ray list may weigh one and a half times its trial walks: a step of the walk
         // tests two boxes, but its branches go each way at random from ray to ray, while a list's
-        // box test of an item is one; on drops.crt a step costs about 1.5 list items (section 44;
-        // the box field, for which section 28 chose half, is no slower).
+        // box test of an item is one; on drops.crt a step costs at least 1.25 list items' tests
+        // (section 44; the box field, for which section 28 chose half, is no slower).
         double bound = light < 0 ? walkedCost * REFLECTED_WEIGHT : walkedCost;
         // Every item weighs at least 1: the walk stops as soon as the list is too heavy.
         int n = collectInto(false, pool, at + 1, (int) Math.min(SHADOW_LIMIT, bound), light < 0 ? near : null);
