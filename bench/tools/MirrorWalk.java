@@ -1,5 +1,6 @@
 package dev.crt.render;
 
+import dev.crt.geom.Vec3;
 import dev.crt.lang.CompileOptions;
 import dev.crt.lang.CrtCompiler;
 import dev.crt.lang.Source;
@@ -35,7 +36,7 @@ public class MirrorWalk {
         Tracer tracer = new Tracer(g, new Lights(List.of()), new BackgroundShader(Background.BLACK, 1));
         int w = 800, h = 600;
         CameraRays camera = new CameraRays(scene.settings().camera(), w, h);
-        double[] rays = mirrorRays(g, tracer, camera, w, h, n);
+        double[] rays = mirrorRays(g, tracer, camera, scene.settings().camera().position(), w, h, n);
         BvhWalker walker = new BvhWalker(g.bvh.depth + 2);
         Ray ray = new Ray();
         // The single ray: the first that opens at least as many nodes as the rays on average.
@@ -75,16 +76,15 @@ public class MirrorWalk {
     }
 
     /** n mirror rays (origin, direction) of pinhole camera rays through random points of a w × h image that hit something. */
-    private static double[] mirrorRays(SceneGeometry g, Tracer tracer, CameraRays camera, int w, int h, int n) {
+    private static double[] mirrorRays(SceneGeometry g, Tracer tracer, CameraRays camera, Vec3 o, int w, int h, int n) {
         SplittableRandom r = new SplittableRandom(7);
         double[] out = new double[6 * n], d = new double[3];
         SurfacePoint p = new SurfacePoint();
-        double[] o = cameraOrigin(camera);
         Tracer t = tracer;
         for (int k = 0, tries = 0; k < n; tries++) {
             if (tries > 100 * n) throw new IllegalArgumentException("too few camera rays hit anything");
             camera.direction(r.nextInt(w), r.nextInt(h), r.nextDouble(), r.nextDouble(), d);
-            if (!t.closestHit(o[0], o[1], o[2], d[0], d[1], d[2], Double.POSITIVE_INFINITY)) continue;
+            if (!t.closestHit(o.x(), o.y(), o.z(), d[0], d[1], d[2], Double.POSITIVE_INFINITY)) continue;
             g.shapes.surface(t.hit.shape, t.hit.face, t.hit.t, t.ray, p);
             double nx = p.nx, ny = p.ny, nz = p.nz, dn = d[0] * nx + d[1] * ny + d[2] * nz;
             if (dn > 0) {
@@ -93,7 +93,7 @@ public class MirrorWalk {
                 nz = -nz;
                 dn = -dn;
             }
-            double off = Tracer.OFFSET * Math.max(Math.max(Math.abs(p.px), Math.abs(p.py)), Math.max(Math.abs(p.pz), 1));
+            double off = Tracer.OFFSET * Math.max(Math.max(Math.abs(p.px), Math.abs(p.py)), Math.max(Math.abs(p.pz), g.shapes.scale[t.hit.shape]));
             out[6 * k] = p.px + off * nx;
             out[6 * k + 1] = p.py + off * ny;
             out[6 * k + 2] = p.pz + off * nz;
@@ -103,14 +103,6 @@ public class MirrorWalk {
             k++;
         }
         return out;
-    }
-
-    /** The camera's position: the lens's centre. */
-    private static double[] cameraOrigin(CameraRays camera) {
-        double[] o = new double[3], aim = new double[4], d = new double[3];
-        camera.aim(0, 0, 0.5, 0.5, aim);
-        camera.throughLens(aim, 0, 0, o, d);
-        return o;
     }
 
     /** Walks ray i of {@code r} from the root with no far end; returns the leaves it passed. */
