@@ -290,9 +290,11 @@ class EditorGuiTest {
 
     /**
      * Opens File → Open recent with the robot's clicks and clicks its entry that starts with
-     * {@code prefix}. A click on File that does not open its menu (CI saw one after the restart
-     * below: AssertJ's menu path then failed on a submenu that was not showing) is made again, three
-     * times at most; File is clicked only while its menu is closed, so a retry never closes it.
+     * {@code prefix}. A click that does not open its menu (CI saw one on File after the restart
+     * below, where AssertJ's menu path then failed on a submenu that was not showing, and one on
+     * Open recent, whose list then never showed) is made again, three times at most for each; a
+     * menu is clicked only while its own popup is closed, so a retry never closes it, and File
+     * again only if its menu closed meanwhile.
      */
     private void clickRecent(String prefix) {
         javax.swing.JMenu file = onEdt(() -> {
@@ -306,16 +308,24 @@ class EditorGuiTest {
             }
             throw new AssertionError("no Open recent menu");
         });
-        for (int attempt = 1; !onEdt(() -> recent.isShowing()); attempt++) {
-            assertThat(attempt).as("clicks on File before its menu showed").isLessThanOrEqualTo(3);
-            if (!onEdt(() -> file.getPopupMenu().isShowing())) robot.click(file);
-            long end = System.nanoTime() + 3_000_000_000L;
-            while (!onEdt(() -> recent.isShowing()) && System.nanoTime() < end) pause(20);
+        for (int tries = 1; !onEdt(() -> recent.getPopupMenu().isShowing()); tries++) {
+            assertThat(tries).as("clicks on Open recent before its list showed").isLessThanOrEqualTo(3);
+            for (int attempt = 1; !onEdt(() -> recent.isShowing()); attempt++) {
+                assertThat(attempt).as("clicks on File before its menu showed").isLessThanOrEqualTo(3);
+                if (!onEdt(() -> file.getPopupMenu().isShowing())) robot.click(file);
+                awaitUpTo(3, () -> recent.isShowing());
+            }
+            if (!onEdt(() -> recent.getPopupMenu().isShowing())) robot.click(recent);
+            awaitUpTo(3, () -> recent.getPopupMenu().isShowing());
         }
-        robot.click(recent);
-        waitFor("the recent files showing", 5, () -> recent.getPopupMenu().isShowing());
         robot.click(robot.finder().find(c -> c instanceof javax.swing.JMenuItem m && m.isShowing()
                 && m.getText().startsWith(prefix)));
+    }
+
+    /** Waits at most {@code seconds} for {@code condition} (read on the EDT); a retry follows when it stays false. */
+    private static void awaitUpTo(double seconds, java.util.function.BooleanSupplier condition) {
+        long end = System.nanoTime() + (long) (seconds * 1e9);
+        while (!onEdt(() -> condition.getAsBoolean()) && System.nanoTime() < end) pause(20);
     }
 
     private static void pause(long millis) {
