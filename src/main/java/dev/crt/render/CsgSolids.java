@@ -680,10 +680,10 @@ final class CsgSolids {
                 if (eventLeaf[f] != leaf && u < t) other = !other;
             }
             if (!alone) continue;
-            // Whether this flip shows: the first operand's through a difference or a union only while
-            // the second is out, through an intersection only while it is in; the second's through
-            // a difference or an intersection only while the first is in, through a union only while it is out.
-            boolean changes = leaf == 0 ? (op == INTERSECTION) == other : (op == UNION) != other;
+            // Whether this flip shows: the solid's inside, by the same rule as the walk's, differs
+            // with this leaf in and out while the other stays as it is.
+            boolean changes = leaf == 0 ? inside(op, true, other) != inside(op, false, other)
+                    : inside(op, other, true) != inside(op, other, false);
             if (changes && materials.transparency(shapes.material[leafShape[leafStart[tree] + leaf]]) == 0) return true;
         }
         return false;
