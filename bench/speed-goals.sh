@@ -11,7 +11,7 @@
 # the "compile" and "bvh build" phases as --stats prints them). With --base, the jar of f05acbf:
 # goal 4 (bench/SideBySide.java, 10,000 spheres at 2560x1440, one render thread, 3 rounds). With
 # --drops and --assets too (drops.crt of CRT 2015 and its assets folder, data files, never
-# committed): goal 1, drops.crt at its shipped 800x600 side by side, 3 rounds (about 12 minutes),
+# committed): goal 1, drops.crt at its shipped 800x600 side by side, 3 rounds (5 to 12 minutes),
 # then both builds' whole processes through bench/jar-compare.sh, 3 runs each (a few minutes).
 # N defaults to 5. Goal 3's heap per sphere is measured by bench/bvh-build.sh --scenes. Goal 4
 # and goal 1 side by side run both builds in one JVM: the java on the PATH, or JAVA (e.g. the newer
@@ -134,7 +134,8 @@ if [ -n "$drops" ]; then
   record "1: drops.crt at 800x600 against f05acbf, side by side" "$q of its time (median of the rounds' ratios $qr)" "at most 0.4" "$(met "$q" "<=" 0.4)"
   # The same, as users run the two builds: whole processes (JVM start, compile, the panorama's
   # decode, the JIT and the render on every core), f05acbf by `java -jar`, this build by ./crt,
-  # alternating. Side by side measures the renders alone; this line shows the fixed costs too.
+  # alternating. Side by side measures the warm renders alone; this line adds what a whole run
+  # costs besides (docs/benchmarks.md, section 46: mostly the render's own warm-up).
   "$here/jar-compare.sh" --base "$base" --runs 3 --out "$work/whole" --new-arg --sampler --new-arg grid \
     "$drops" --assets "$assets" >"$work/whole.txt" 2>&1 || { cat "$work/whole.txt" >&2; exit 1; }
   w=$(awk -F': ' '/^ratio new \/ base, CPU time/ {print $2}' "$work/whole.txt")
