@@ -448,47 +448,29 @@ final class Candidates {
         double big = Math.max(Math.max(Math.max(Math.abs(x0), Math.abs(x1)), Math.max(Math.abs(y0), Math.abs(y1))),
                 Math.max(Math.max(Math.abs(z0), Math.abs(z1)), shapes.scale[shape]));
         double w = 4 * Tracer.OFFSET * big;
-        double[] r = regions, h = hull, dir = directions;
+        double[] r = regions, h = hull;
         int k = 12 * rec;
         boolean first = records[ri + 2] == 0;
         // A box's face is flat: its rays' origins fill a small part of the box. Other shapes' lists
         // cover their whole box, which one build does (their trial regions gained nothing on
         // the 10,000 spheres and cost their growths, section 28).
         boolean flat = shapes.kind[shape] == Shapes.BOX;
-        for (int a = 0; a < 3; a++) {
-            double bl = (a == 0 ? x0 : a == 1 ? y0 : z0) - w, bh = (a == 0 ? x1 : a == 1 ? y1 : z1) + w;
-            double o = a == 0 ? ox : a == 1 ? oy : oz, d = a == 0 ? dx : a == 1 ? dy : dz;
-            // The first region is the trial's box widened by its extent on every side; a growth
-            // widens only the sides the ray lies beyond, by the union's extent or at least 1/32 of
-            // the shape's (directions: 1/8), so that a few growths cover what the rays come from.
-            if (flat) {
-                h[a] = widen(first, r[k + a], r[k + 3 + a], o, (bh - bl) / 32, bl, false);
-                h[3 + a] = widen(first, r[k + a], r[k + 3 + a], o, (bh - bl) / 32, bh, true);
-            } else {
-                h[a] = Math.min(bl, o);
-                h[3 + a] = Math.max(bh, o);
-            }
-            if (light < 0) {
-                // Unit directions have no component beyond ±1.
-                dir[a] = widen(first, r[k + 6 + a], r[k + 9 + a], d, 0.125, -1, false);
-                dir[3 + a] = widen(first, r[k + 6 + a], r[k + 9 + a], d, 0.125, 1, true);
-            } else {
-                dir[a] = Double.NEGATIVE_INFINITY;
-                dir[3 + a] = Double.POSITIVE_INFINITY;
-            }
-        }
+        // Each axis by a call rather than a loop over the axes: a list is built a few thousand
+        // times a render, and the loop (its bounds chosen by index, its tests the same every turn)
+        // made the JIT's optimising compiler spend 60-160 ms on this method, two or three times
+        // over after its loop guesses failed (docs/benchmarks.md, section 47).
+        regionAxis(0, x0 - w, x1 + w, ox, dx, k, flat, light < 0, first);
+        regionAxis(1, y0 - w, y1 + w, oy, dy, k, flat, light < 0, first);
+        regionAxis(2, z0 - w, z1 + w, oz, dz, k, flat, light < 0, first);
         double sweep = 4 * Math.sqrt(3) * (sceneSize + big) + 1;
         if (light < 0) {
             // Beyond twice the diameter of the box around every item a ray at least ½ long (as
             // reflected() takes them) has left it: the far box is the region moved that far.
-            double m = 0;
-            for (int a = 0; a < 3; a++) {
-                h[6 + a] = h[a] + 2 * sweep * dir[a];
-                h[9 + a] = h[3 + a] + 2 * sweep * dir[3 + a];
-                double c = Math.max(Math.abs(dir[a]), Math.abs(dir[3 + a]));
-                m += c * c;
-            }
-            // A ray's parameter t covers at least the distance travelled over the longest direction's length.
+            // A ray's parameter t covers at least the distance travelled over the longest
+            // direction's length.
+            double m = sweptAxis(0, 2 * sweep);
+            m += sweptAxis(1, 2 * sweep);
+            m += sweptAxis(2, 2 * sweep);
             reach = Math.sqrt(m) * (1 + 1e-9);
         } else if (lights.kind[light] == Lights.PARALLEL) {
             // Every shadow ray runs along the light's direction w to infinity: the region box swept
@@ -496,31 +478,32 @@ final class Candidates {
             // beyond, so its far end may be a box moved that far.
             double wx = lights.x[light], wy = lights.y[light], wz = lights.z[light];
             double far = sweep / Math.sqrt(wx * wx + wy * wy + wz * wz);
-            for (int a = 0; a < 3; a++) {
-                double wa = a == 0 ? wx : a == 1 ? wy : wz;
-                h[6 + a] = h[a] + far * wa;
-                h[9 + a] = h[3 + a] + far * wa;
-            }
+            h[6] = h[0] + far * wx;
+            h[9] = h[3] + far * wx;
+            h[7] = h[1] + far * wy;
+            h[10] = h[4] + far * wy;
+            h[8] = h[2] + far * wz;
+            h[11] = h[5] + far * wz;
         } else {
             h[6] = h[9] = lights.x[light];
             h[7] = h[10] = lights.y[light];
             h[8] = h[11] = lights.z[light];
         }
         // Per axis, whether every ray of the region moves up along it (+1) or down (−1).
-        for (int a = 0; a < 3; a++) {
-            double lo, hi;
-            if (light < 0) {
-                lo = dir[a];
-                hi = dir[3 + a];
-            } else if (lights.kind[light] == Lights.PARALLEL) {
-                lo = hi = a == 0 ? lights.x[light] : a == 1 ? lights.y[light] : lights.z[light];
-            } else {
-                // Towards the light's point q: q − o over o in the region.
-                double q = a == 0 ? lights.x[light] : a == 1 ? lights.y[light] : lights.z[light];
-                lo = q - h[3 + a];
-                hi = q - h[a];
-            }
-            moving[a] = lo > 0 ? 1 : hi < 0 ? -1 : 0;
+        if (light < 0) {
+            double[] dir = directions;
+            moving[0] = sign(dir[0], dir[3]);
+            moving[1] = sign(dir[1], dir[4]);
+            moving[2] = sign(dir[2], dir[5]);
+        } else if (lights.kind[light] == Lights.PARALLEL) {
+            moving[0] = sign(lights.x[light], lights.x[light]);
+            moving[1] = sign(lights.y[light], lights.y[light]);
+            moving[2] = sign(lights.z[light], lights.z[light]);
+        } else {
+            // Towards the light's point q: q − o over o in the region.
+            moving[0] = sign(lights.x[light] - h[3], lights.x[light] - h[0]);
+            moving[1] = sign(lights.y[light] - h[4], lights.y[light] - h[1]);
+            moving[2] = sign(lights.z[light] - h[5], lights.z[light] - h[2]);
         }
         int at = poolSize;
         if (at + 1 + SHADOW_LIMIT > MAX_POOL) return -1;
@@ -543,10 +526,48 @@ final class Candidates {
         if (light < 0) sortByNear(pool, near, at + 1, n);
         pool[at] = n;
         System.arraycopy(h, 0, r, k, 6);
-        System.arraycopy(dir, 0, r, k + 6, 6);
+        System.arraycopy(directions, 0, r, k + 6, 6);
         poolSize = at + 1 + n;
         records[ri + 2] = at + 1;
         return at;
+    }
+
+    /**
+     * Axis a of a list's region ({@link #hull}'s near box) and of its directions, for a ray from
+     * o along d: the shape's box [bl, bh] on that axis (widened by the rays' offset), or the
+     * record's trial box widened as {@link #grow} says; directions only for reflected rays.
+     */
+    private void regionAxis(int a, double bl, double bh, double o, double d, int k, boolean flat, boolean reflected, boolean first) {
+        double[] r = regions, h = hull, dir = directions;
+        if (flat) {
+            h[a] = widen(first, r[k + a], r[k + 3 + a], o, (bh - bl) / 32, bl, false);
+            h[3 + a] = widen(first, r[k + a], r[k + 3 + a], o, (bh - bl) / 32, bh, true);
+        } else {
+            h[a] = Math.min(bl, o);
+            h[3 + a] = Math.max(bh, o);
+        }
+        if (reflected) {
+            // Unit directions have no component beyond ±1.
+            dir[a] = widen(first, r[k + 6 + a], r[k + 9 + a], d, 0.125, -1, false);
+            dir[3 + a] = widen(first, r[k + 6 + a], r[k + 9 + a], d, 0.125, 1, true);
+        } else {
+            dir[a] = Double.NEGATIVE_INFINITY;
+            dir[3 + a] = Double.POSITIVE_INFINITY;
+        }
+    }
+
+    /** Axis a of a reflected-ray region's far box, its near box moved by {@code s} times its directions; returns the square of the largest direction component on the axis. */
+    private double sweptAxis(int a, double s) {
+        double[] h = hull, dir = directions;
+        h[6 + a] = h[a] + s * dir[a];
+        h[9 + a] = h[3 + a] + s * dir[3 + a];
+        double c = Math.max(Math.abs(dir[a]), Math.abs(dir[3 + a]));
+        return c * c;
+    }
+
+    /** +1 when every value of [lo, hi] is positive, −1 when every one is negative, else 0. */
+    private static int sign(double lo, double hi) {
+        return lo > 0 ? 1 : hi < 0 ? -1 : 0;
     }
 
     /**
@@ -591,14 +612,17 @@ final class Candidates {
         for (int k = at + 1; k < at + count; k++) {
             double t = near[k];
             int item = items[k];
-            int m = k - 1;
-            while (m >= at && near[m] > t) {
-                near[m + 1] = near[m];
-                items[m + 1] = items[m];
+            // The place m is found moving down while the one below is larger: a loop on m > at
+            // rather than on m ≥ at, which the JIT's guess about its bound (a "loop limit
+            // check") failed on and compiled the list builder again (section 47).
+            int m = k;
+            while (m > at && near[m - 1] > t) {
+                near[m] = near[m - 1];
+                items[m] = items[m - 1];
                 m--;
             }
-            near[m + 1] = t;
-            items[m + 1] = item;
+            near[m] = t;
+            items[m] = item;
         }
     }
 
