@@ -534,8 +534,11 @@ final class Candidates {
 
     /**
      * Axis a of a list's region ({@link #hull}'s near box) and of its directions, for a ray from
-     * o along d: the shape's box [bl, bh] on that axis (widened by the rays' offset), or the
-     * record's trial box widened as {@link #grow} says; directions only for reflected rays.
+     * o along d: the shape's box [bl, bh] on that axis (widened by the rays' offset) or, on a box's
+     * face, the record's trial box widened; directions only for reflected rays. The first region
+     * is the trial's box widened by its extent on every side; a growth widens only the sides the
+     * ray lies beyond, by the union's extent or at least 1/32 of the shape's (directions: 1/8), so
+     * that a few growths cover what the rays come from.
      */
     private void regionAxis(int a, double bl, double bh, double o, double d, int k, boolean flat, boolean reflected, boolean first) {
         double[] r = regions, h = hull, dir = directions;
