@@ -66,10 +66,10 @@ calibrate() {
   m=$(date +%s%N)
   awk -v one=$((e - s)) -v all=$((m - e)) -v n="$(nproc)" \
     'BEGIN { printf "%.2f s alone, %.2f s on all %d cores at once: %.1f cores available", one / 1e9, all / 1e9, n, n * one / all }'
-  # The cost of fresh memory: dd reads 256 MB of zeros into a buffer of its own, so nearly all of
-  # its time is the kernel handing it new pages. That cost moves here by up to 10x within minutes
-  # for the same number of pages, and goal 3's build phase, which fills about 270 MB of new
-  # arrays for 1e6 spheres, moves with it (docs/benchmarks.md, section 47).
+  # The cost of fresh memory: dd reads 256 MB of zeros into a buffer of its own, so most of its
+  # time is the kernel handing it new pages. On this host the system time of the same page faults
+  # moved up to twentyfold within minutes, and goal 3's build phase, which fills about 270 MB of
+  # new arrays for 1e6 spheres, moves with it (docs/benchmarks.md, section 47).
   s=$(date +%s%N)
   dd if=/dev/zero of=/dev/null bs=256M count=1 2>/dev/null
   e=$(date +%s%N)
