@@ -2,7 +2,7 @@
 # Every speed goal of issue 10 in one run, with the machine's speed measured beside them: a fixed
 # awk loop before and after, alone and on every core at once, and the time to fill 256 MB of fresh
 # memory (on this kind of shared machine the speed moves by up to 2x within minutes, a core may be
-# half taken and new pages may cost ten times more, and every figure here moves with it;
+# half taken and new pages may cost twenty times more, and every figure here moves with it;
 # docs/benchmarks.md sections 34 to 47).
 #
 #   bench/speed-goals.sh [--runs N] [--base F05ACBF.jar] [--drops DROPS.crt --assets DIR] [--side-java JAVA]
