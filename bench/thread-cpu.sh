@@ -32,23 +32,23 @@ trap 'rm -f "$snaps"' EXIT
 "$@" >&2 &
 pid=$!
 while kill -0 "$pid" 2>/dev/null; do
-  # One line per thread: its id, name, and user + system clock ticks (fields 14 and 15 of stat;
-  # the name, field 2, is in parentheses and may hold spaces).
-  for f in /proc/"$pid"/task/*/stat; do cat "$f" 2>/dev/null || true; done \
-    | awk '{ op = index($0, "("); cl = 0
-             for (i = length($0); i > 0; i--) if (substr($0, i, 1) == ")") { cl = i; break }
-             name = substr($0, op + 1, cl - op - 1)
-             split(substr($0, cl + 2), f, " ")
-             printf "%s\t%s\t%d\n", $1, name, f[12] + f[13] }' >>"$snaps"
+  # Every thread's stat line, copied as it is: one process a reading (on two cores a process per
+  # thread would take a share of the machine it measures); a thread that ended meanwhile is skipped.
+  cat /proc/"$pid"/task/*/stat >>"$snaps" 2>/dev/null || true
   sleep "$every"
 done
 status=0
 wait "$pid" || status=$?
 
-# The last reading of each thread, summed by name without its number ("crt-render-3",
-# "C2 CompilerThread1" and "GC Thread#0" become "crt-render-", "C2 CompilerThread", "GC Thread").
-awk -F'\t' -v hz="$(getconf CLK_TCK)" '
-  { last[$1] = $3; name[$1] = $2 }
+# The last reading of each thread: its id, its name (field 2, in parentheses, may hold spaces) and
+# its user + system clock ticks (fields 14 and 15), summed by name without its number
+# ("crt-render-3", "C2 CompilerThread1" and "GC Thread#0" become "crt-render-", "C2 CompilerThread",
+# "GC Thread").
+awk -v hz="$(getconf CLK_TCK)" '
+  { op = index($0, "("); cl = 0
+    for (i = length($0); i > 0; i--) if (substr($0, i, 1) == ")") { cl = i; break }
+    split(substr($0, cl + 2), f, " ")
+    last[$1] = f[12] + f[13]; name[$1] = substr($0, op + 1, cl - op - 1) }
   END {
     for (t in last) { n = name[t]; sub(/[#0-9]+$/, "", n); sum[n] += last[t]; all += last[t] }
     for (n in sum) if (sum[n] > 0) printf "%9.2f s  %s\n", sum[n] / hz, n

@@ -468,9 +468,10 @@ final class Candidates {
             // reflected() takes them) has left it: the far box is the region moved that far.
             // A ray's parameter t covers at least the distance travelled over the longest
             // direction's length.
-            double m = sweptAxis(0, 2 * sweep);
-            m += sweptAxis(1, 2 * sweep);
-            m += sweptAxis(2, 2 * sweep);
+            double far = 2 * sweep;
+            double m = sweptAxis(0, far);
+            m += sweptAxis(1, far);
+            m += sweptAxis(2, far);
             reach = Math.sqrt(m) * (1 + 1e-9);
         } else if (lights.kind[light] == Lights.PARALLEL) {
             // Every shadow ray runs along the light's direction w to infinity: the region box swept
