@@ -2,7 +2,7 @@
 # BVH build time and memory from 1e5 to 1e7 items (issue 10 goal 3, issue 12's mesh goal).
 #
 #   bench/bvh-build.sh [--sizes "100000 1000000 10000000"] [--rounds N] [--heap 2g]
-#                      [--scenes] [--work DIR] [--jar JAR]
+#                      [--scenes | --spheres-scene] [--work DIR] [--jar JAR]
 #
 # For each size: BvhBuilder.build alone over random spheres (bench/scenes/spheres.crt's
 # distribution) and over the triangles of a bumpy ball (bench/tools/MeshGen.java's), N rounds in
@@ -12,7 +12,8 @@
 # With --scenes, also whole runs as the command line does them, each in a fresh JVM: compile
 # bench/scenes/spheres.crt at 1e6 spheres and prepare its geometry (heap held per sphere after
 # both), and load a generated 10-million-triangle ball (binary PLY, kept in --work, default
-# ${TMPDIR:-/tmp}/crt-bvh-build) and build its BVH, in --heap.
+# ${TMPDIR:-/tmp}/crt-bvh-build) and build its BVH, in --heap. --spheres-scene: the first of
+# them only (bench/speed-goals.sh reads goal 3's heap per sphere from it; with --sizes "" alone).
 # Needs target/crt.jar (mvn -B -q -o package -DskipTests), or the jar given by --jar (another
 # build's, to compare side by side: run the two alternately). Numbers move with the machine's
 # load: the load average is printed before and after.
@@ -27,13 +28,14 @@ scenes=0
 work="${TMPDIR:-/tmp}/crt-bvh-build"
 jar="$root/target/crt.jar"
 
-usage() { sed -n '2,18p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'; }
+usage() { sed -n '2,19p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'; }
 while [ $# -gt 0 ]; do
   case "$1" in
     --sizes) sizes="$2"; shift 2 ;;
     --rounds) rounds="$2"; shift 2 ;;
     --heap) heap="$2"; shift 2 ;;
     --scenes) scenes=1; shift ;;
+    --spheres-scene) scenes=2; shift ;;
     --work) work="$2"; shift 2 ;;
     --jar) jar="$(cd "$(dirname "$2")" && pwd)/$(basename "$2")"; shift 2 ;;
     -h|--help) usage; exit 0 ;;
@@ -53,8 +55,10 @@ for n in $sizes; do
     run boxes "$kind" "$n" "$rounds" | tail -1
   done
 done
-if [ "$scenes" = 1 ]; then
+if [ "$scenes" != 0 ]; then
   run scene "$root/bench/scenes/spheres.crt" 1000000 | head -1
+fi
+if [ "$scenes" = 1 ]; then
   mkdir -p "$work"
   ply="$work/ball-10000000.ply"
   if [ ! -f "$ply" ]; then java "$here/tools/MeshGen.java" 10000000 "$ply" >/dev/null; fi

@@ -10,8 +10,8 @@
 # Always: goal 2 (bench/povray-compare.sh, N runs, on the box field and on 10,000 spheres made by
 # a loop and written out; bench/compile-speed.sh) and goal 3 (N runs of crt render on 1e6 spheres:
 # the "compile" and "bvh build" phases as --stats prints them; then the heap the scene holds per
-# sphere after its compile and geometry, measured as bench/bvh-build.sh --scenes does, in a JVM
-# of -Xmx2g on the java on the PATH). With --base, the jar of f05acbf:
+# sphere after its compile and geometry, by bench/bvh-build.sh --spheres-scene). With --base, the
+# jar of f05acbf:
 # goal 4 (bench/SideBySide.java, 10,000 spheres at 2560x1440, one render thread, 3 rounds). With
 # --drops and --assets too (drops.crt of CRT 2015 and its assets folder, data files, never
 # committed): goal 1, drops.crt at its shipped 800x600 side by side, 3 rounds (5 to 12 minutes),
@@ -125,12 +125,9 @@ done
 worst() { printf '%s\n' "$@" | sort -g | tail -1; }
 record "3: 1e6 spheres, bvh build phase" "${builds[*]} s (slowest $(worst "${builds[@]}"); the runs' system CPU ${system[*]} s)" "under 1 s" "$(met "$(worst "${builds[@]}")" "<" 1)"
 record "3: 1e6 spheres, compile phase" "${compiles[*]} s (slowest $(worst "${compiles[@]}"))" "under 1.5 s" "$(met "$(worst "${compiles[@]}")" "<" 1.5)"
-# The heap per sphere: bench/tools/BvhBuild.java's "scene" run (compile, then the geometry and
-# its trees, then what the heap still holds after a collection, divided by the items).
-mkdir -p "$work/bvhbuild"
-javac -d "$work/bvhbuild" -cp "$root/target/crt.jar" "$here/tools/BvhBuild.java"
-java -Xmx2g -Xss16m -cp "$work/bvhbuild:$root/target/crt.jar" dev.crt.render.BvhBuild scene "$here/scenes/spheres.crt" 1000000 \
-  >"$work/heap3.txt" 2>&1 || { cat "$work/heap3.txt" >&2; exit 1; }
+# The heap per sphere, as bench/bvh-build.sh measures it (compile, then the geometry and its
+# trees, then what the heap still holds after a collection, divided by the items).
+"$here/bvh-build.sh" --sizes "" --spheres-scene >"$work/heap3.txt" 2>&1 || { cat "$work/heap3.txt" >&2; exit 1; }
 per=$(awk '/bytes per item/ {for (i = 1; i <= NF; i++) if ($i == "bytes" && $(i + 1) == "per") print $(i - 1)}' "$work/heap3.txt" | head -1)
 if [ -z "$per" ]; then cat "$work/heap3.txt" >&2; echo "speed-goals: no heap figure from BvhBuild" >&2; exit 1; fi
 record "3: 1e6 spheres, heap held per sphere after compile and build" "$per bytes" "under 400 bytes" "$(met "$per" "<" 400)"
@@ -171,7 +168,7 @@ if [ -n "$drops" ]; then
   record "1: drops.crt at 800x600 against f05acbf, whole process (bench/jar-compare.sh, 3 runs)" "$w of its CPU time ($ww of its wall time)" "at most 0.4 (an extra: the goal is side by side)" "$(met "$w" "<=" 0.4)"
   # The goal's picture: within 1 level on 99.9 % of the pixels. The share of pixels that differ at
   # all (bench/tools/ImageCompare.java, the last pair of the whole runs) is the stricter figure.
-  pics=$(awk -F': ' '/^pictures:/ {sub(/^pictures: /, ""); print}' "$work/whole.txt")
+  pics=$(sed -n 's/^pictures: //p' "$work/whole.txt")
   share=$(printf '%s\n' "$pics" | sed -n 's/.*differ at all: \([0-9.]*\)%.*/\1/p')
   if [ -z "$share" ]; then cat "$work/whole.txt" >&2; echo "speed-goals: no picture comparison from jar-compare" >&2; exit 1; fi
   largest=$(printf '%s\n' "$pics" | sed -n 's/.*largest \([0-9]*\);.*/\1/p')
